@@ -1,0 +1,213 @@
+// The relpos command (SPEC.md §3): solve, rules, table.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "relpos/core/registry.hpp"
+#include "relpos/core/solver.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "relpos/rules/builtin.hpp"
+
+namespace fs = std::filesystem;
+using relpos::Registry;
+
+namespace {
+
+constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
+
+const char* kUsage =
+    "usage:\n"
+    "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
+    "  relpos rules\n"
+    "  relpos table DIR-or-SPEC... [--repeat N]\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Args {
+  std::vector<std::string> positional;
+  relpos::ResultOptions result;
+  std::string out;
+  int repeat = 200;
+};
+
+long parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
+  char* end = nullptr;
+  long x = std::strtol(v.c_str(), &end, 10);
+  if (v.empty() || *end || x < lo || x > hi)
+    throw UsageError(flag + ": expected an integer in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "], got '" + v + "'");
+  return x;
+}
+
+Args parseArgs(int argc, char** argv, int first) {
+  Args a;
+  for (int i = first; i < argc; ++i) {
+    std::string s = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(s + ": missing value");
+      return argv[++i];
+    };
+    if (s == "--samples") a.result.samples = static_cast<int>(parseInt(s, value(), 0, 1000000));
+    else if (s == "--seed") a.result.seed = static_cast<std::uint64_t>(parseInt(s, value(), 0, LONG_MAX));
+    else if (s == "--repeat") a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
+    else if (s == "--window") {
+      std::string v = value();
+      char* end = nullptr;
+      a.result.window = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(a.result.window >= 0) || !std::isfinite(a.result.window))
+        throw UsageError("--window: expected a non-negative number, got '" + v + "'");
+    } else if (s == "-o") a.out = value();
+    else if (s.size() > 1 && s[0] == '-') throw UsageError("unknown option '" + s + "'");
+    else a.positional.push_back(s);
+  }
+  return a;
+}
+
+// Writes text to path atomically (temporary file + rename), so a failure never leaves a partial
+// result behind.
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write '" + tmp + "'");
+    out << text;
+    if (!out.flush()) throw std::runtime_error("cannot write '" + tmp + "'");
+  }
+  fs::rename(tmp, path);
+}
+
+bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* pb) {
+  relpos::ParseResult r = relpos::parseSpecFile(file, reg);
+  for (const auto& w : r.warnings)
+    std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
+  for (const auto& e : r.errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+  if (!r.problem) return false;
+  *pb = std::move(*r.problem);
+  return true;
+}
+
+int cmdSolve(const Args& a, const Registry& reg) {
+  if (a.positional.size() != 1) throw UsageError("solve takes exactly one spec file");
+  relpos::Problem pb;
+  if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
+  relpos::Workspace ws;
+  relpos::Solution sol;
+  relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
+  const std::string text = relpos::resultToJson(pb, sol, a.result).dump(2) + "\n";
+  if (a.out.empty()) std::cout << text;
+  else writeFileAtomically(a.out, text);
+  return kExitOk;
+}
+
+int cmdRules(const Args& a, const Registry& reg) {
+  if (!a.positional.empty()) throw UsageError("rules takes no arguments");
+  std::cout << "constraint types:\n";
+  for (const auto& t : reg.constraintTypes()) {
+    std::cout << "  " << t.name << "  [" << t.origin << "]  " << t.description << "\n    accepts:";
+    for (const auto& p : t.accepts)
+      std::cout << " " << relpos::toString(p.fixed) << "-" << relpos::toString(p.mobile);
+    std::cout << "\n";
+  }
+  std::cout << "combination rules:\n";
+  for (const auto& r : reg.rules())
+    std::cout << "  " << r.name << "  (" << relpos::toString(r.first) << " + "
+              << relpos::toString(r.second) << ")  [" << r.origin << "]  " << r.citation << "\n";
+  std::cout << "manifolds:\n";
+  for (const auto& m : reg.manifolds())
+    std::cout << "  " << m.name << "  [" << m.origin << "]  " << m.description << "\n";
+  std::cout << "matchers:\n";
+  for (const auto& m : reg.matchers()) std::cout << "  " << m.name << "  [" << m.origin << "]\n";
+  return kExitOk;
+}
+
+std::vector<std::string> specFiles(const std::vector<std::string>& inputs) {
+  std::vector<std::string> files;
+  for (const auto& in : inputs) {
+    if (fs::is_directory(in)) {
+      std::vector<std::string> here;
+      for (const auto& e : fs::directory_iterator(in))
+        if (e.is_regular_file() && e.path().extension() == ".json") here.push_back(e.path().string());
+      std::sort(here.begin(), here.end());
+      files.insert(files.end(), here.begin(), here.end());
+    } else if (fs::exists(in)) {
+      files.push_back(in);
+    } else {
+      throw UsageError("no such file or directory: '" + in + "'");
+    }
+  }
+  return files;
+}
+
+// The main job on a folder of examples: one row per spec with status, branches, DOF and the
+// median solve time over --repeat solves.
+int cmdTable(const Args& a, const Registry& reg) {
+  if (a.positional.empty()) throw UsageError("table needs a folder or spec files");
+  const auto files = specFiles(a.positional);
+  std::printf("%-36s %-13s %8s %-12s %10s\n", "name", "status", "branches", "DOF", "median us");
+  int invalid = 0;
+  relpos::Workspace ws;
+  relpos::Solution sol;
+  for (const auto& f : files) {
+    relpos::Problem pb;
+    if (!loadProblem(f, reg, &pb)) {
+      std::printf("%-36s %-13s\n", fs::path(f).stem().string().c_str(), "invalid");
+      ++invalid;
+      continue;
+    }
+    std::vector<double> us;
+    us.reserve(a.repeat);
+    for (int i = 0; i < a.repeat; ++i) {
+      relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
+      us.push_back(sol.solve_us);
+    }
+    std::nth_element(us.begin(), us.begin() + us.size() / 2, us.end());
+    std::string dofs;
+    for (const auto& b : sol.branches) {
+      std::string d = std::to_string(b.manifold->dof());
+      if (dofs.find(d) == std::string::npos) dofs += (dofs.empty() ? "" : ",") + d;
+    }
+    std::printf("%-36s %-13s %8zu %-12s %10.2f\n", pb.name.c_str(), relpos::toString(sol.status),
+                sol.branches.size(), dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
+  }
+  std::printf("%zu specs, %d invalid\n", files.size(), invalid);
+  return invalid ? kExitInvalid : kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc < 2) throw UsageError("missing command");
+    const std::string cmd = argv[1];
+    if (cmd == "-h" || cmd == "--help") {
+      std::cout << kUsage;
+      return kExitOk;
+    }
+    Args a = parseArgs(argc, argv, 2);
+    Registry reg;
+    relpos::registerBuiltins(reg);
+    reg.freeze();
+    if (cmd == "solve") return cmdSolve(a, reg);
+    if (cmd == "rules") return cmdRules(a, reg);
+    if (cmd == "table") return cmdTable(a, reg);
+    throw UsageError("unknown command '" + cmd + "'");
+  } catch (const UsageError& e) {
+    std::cerr << "relpos: " << e.what() << "\n" << kUsage;
+    return kExitInvalid;
+  } catch (const std::exception& e) {
+    std::cerr << "relpos: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,76 @@
+#pragma once
+// Fundamental constraints (PMF §III): the pure translational distances point–point, point–line
+// and point–plane, and the pure rotational vector–vector angle. Each side is tagged fixed or
+// mobile: fixed geometry is in world coordinates, mobile geometry in the mobile object's frame
+// M, so a candidate pose X_WM = (R, T) maps a mobile point p to R p + T.
+#include <cstdint>
+
+#include "relpos/core/fixed_vector.hpp"
+#include "relpos/core/geometry.hpp"
+
+namespace relpos {
+
+// Bit i set = input constraint i contributed. Problems with more than 64 constraints are
+// answered `unhandled` by the solver.
+using SourceMask = std::uint64_t;
+
+enum class FundamentalKind : unsigned char {
+  kPointPoint = 0,  // |p - q| in [lo, hi]
+  kPointLine = 1,   // distance(p, line(q, d)) in [lo, hi]
+  kPointPlane = 2,  // (p - q) . d in [lo, hi], plane (q, d); exact ones are normalised to 0
+  kAngle = 3,       // angle(R u_m, u_f) in [lo, hi]
+};
+inline constexpr int kFundamentalKinds = 4;
+const char* toString(FundamentalKind k);
+
+enum class Side : unsigned char { kFixed, kMobile };
+inline Side other(Side s) { return s == Side::kFixed ? Side::kMobile : Side::kFixed; }
+
+struct Fundamental {
+  FundamentalKind kind = FundamentalKind::kPointPoint;
+  // Translational: the side that owns the point p ("a" in PMF); the other element (q, d) belongs
+  // to the other side ("b"). Point–point constraints are stored with the point p mobile.
+  // Angle: p = u_m (mobile vector), q = u_f (fixed vector); point_side unused.
+  Side point_side = Side::kMobile;
+  Vector3d p = Vector3d::Zero();
+  Vector3d q = Vector3d::Zero();
+  Vector3d d = Vector3d::UnitZ();
+  double lo = 0.0, hi = 0.0;
+  SourceMask sources = 0;
+
+  bool exact() const { return lo == hi; }
+  double value() const { return lo; }
+  bool translational() const { return kind != FundamentalKind::kAngle; }
+
+  static Fundamental pointPoint(const Vector3d& p_m, const Vector3d& q_f, double v, SourceMask s);
+  static Fundamental pointLine(Side point_side, const Vector3d& p, const Vector3d& a,
+                               const Vector3d& d, double v, SourceMask s);
+  // Exact point-plane: plane through a with normal n, signed offset v folded into the plane.
+  static Fundamental pointPlane(Side point_side, const Vector3d& p, const Vector3d& a,
+                                const Vector3d& n, double v, SourceMask s);
+  static Fundamental angle(const Vector3d& u_m, const Vector3d& u_f, double alpha, SourceMask s);
+};
+
+// Capacity of a constraint set: twice the 8 constraints of the allocation-free target leaves
+// room for the extra constraints rules add (implicit rotations, either-alternatives).
+inline constexpr std::size_t kMaxFundamentals = 24;
+
+struct ConstraintSet {
+  FixedVector<Fundamental, kMaxFundamentals> translational;  // C_T
+  FixedVector<Fundamental, kMaxFundamentals> rotational;     // C_R
+  SourceMask dropped_redundant = 0;                          // sources of constraints dropped
+  bool overflow = false;                                     // a push_back was refused
+  void clear() {
+    translational.clear();
+    rotational.clear();
+    dropped_redundant = 0;
+    overflow = false;
+  }
+  void add(const Fundamental& f) {
+    bool ok = f.translational() ? translational.push_back(f) : rotational.push_back(f);
+    overflow = overflow || !ok;
+  }
+  SourceMask usedSources() const;
+};
+
+}  // namespace relpos

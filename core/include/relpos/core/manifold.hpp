@@ -1,0 +1,107 @@
+#pragma once
+// A solution branch: a parameterised set of poses X_WM(θ) (PMF §V, Somani §IV). Manifolds are
+// stored inline in a Branch (ManifoldHolder) so that solving allocates nothing; a manifold type
+// must fit kManifoldStorage bytes and be copyable.
+#include <array>
+#include <cstddef>
+#include <new>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include "relpos/core/geometry.hpp"
+#include "relpos/core/tolerance.hpp"
+
+namespace relpos {
+
+inline constexpr int kMaxDof = 6;
+using Params = std::array<double, kMaxDof>;
+
+enum class ParamKind : unsigned char { kAngle, kLength, kOther };
+const char* toString(ParamKind k);
+
+struct Parameter {
+  const char* name = "";
+  ParamKind kind = ParamKind::kAngle;
+  double min = -kPi;  // -inf / +inf for unbounded lengths
+  double max = kPi;
+  bool periodic = false;
+};
+
+class Manifold {
+ public:
+  virtual ~Manifold() = default;
+  virtual const char* typeName() const = 0;
+  virtual int dof() const = 0;
+  // -1 for a mixed (non-separable) manifold.
+  virtual int rotationalDof() const = 0;
+  virtual int translationalDof() const = 0;
+  virtual Parameter parameter(int i) const = 0;
+  virtual Isometry3d pose(const Params& theta) const = 0;
+  // Parameters of a pose of this manifold near X (the projection of X, PMF 003 §V). Exact for a
+  // pose on the manifold: pose(nearest(pose(θ))) == pose(θ).
+  virtual Params project(const Isometry3d& X) const = 0;
+  virtual std::string describe() const = 0;
+  // Placement copy into raw storage (used by ManifoldHolder).
+  virtual Manifold* copyInto(void* storage) const = 0;
+
+  // Whether X lies on the manifold: its projection maps back onto X.
+  bool contains(const Isometry3d& X, const Tolerance& tol) const;
+};
+
+// CRTP helper providing copyInto.
+template <typename Derived>
+class ManifoldBase : public Manifold {
+ public:
+  Manifold* copyInto(void* storage) const override {
+    return new (storage) Derived(static_cast<const Derived&>(*this));
+  }
+};
+
+inline constexpr std::size_t kManifoldStorage = 1024;
+
+class ManifoldHolder {
+ public:
+  ManifoldHolder() = default;
+  ManifoldHolder(const ManifoldHolder& o) { copyFrom(o); }
+  ManifoldHolder& operator=(const ManifoldHolder& o) {
+    if (this != &o) {
+      reset();
+      copyFrom(o);
+    }
+    return *this;
+  }
+  ~ManifoldHolder() { reset(); }
+
+  template <typename T, typename... Args>
+  T& emplace(Args&&... args) {
+    static_assert(sizeof(T) <= kManifoldStorage, "manifold type too large for inline storage");
+    static_assert(alignof(T) <= 16, "manifold type over-aligned");
+    reset();
+    T* t = new (buf_) T(std::forward<Args>(args)...);
+    ptr_ = t;
+    return *t;
+  }
+  void reset() {
+    if (ptr_) ptr_->~Manifold();
+    ptr_ = nullptr;
+  }
+  const Manifold* get() const { return ptr_; }
+  const Manifold& operator*() const { return *ptr_; }
+  const Manifold* operator->() const { return ptr_; }
+  explicit operator bool() const { return ptr_ != nullptr; }
+
+ private:
+  void copyFrom(const ManifoldHolder& o) { ptr_ = o.ptr_ ? o.ptr_->copyInto(buf_) : nullptr; }
+  alignas(16) unsigned char buf_[kManifoldStorage];
+  Manifold* ptr_ = nullptr;
+};
+
+// Distance used for "nearest" (SPEC.md §2): translation distance plus rotation angle.
+double poseDistance(const Isometry3d& a, const Isometry3d& b);
+
+// The pose of manifold m nearest to X: m.project(X) refined by a deterministic pattern search on
+// poseDistance within the parameter bounds. Never worse than the projection.
+Params nearestParams(const Manifold& m, const Isometry3d& X);
+
+}  // namespace relpos

@@ -1,0 +1,63 @@
+#pragma once
+// The immutable description of a relational positioning problem, as parsed from a spec or built
+// in code. Nothing here is solved yet.
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "relpos/core/feature.hpp"
+
+namespace relpos {
+
+enum class Orientation : unsigned char { kAligned, kOpposed, kEither };
+const char* toString(Orientation o);
+
+struct NamedFeature {
+  std::string name;  // as referenced in constraints ("K", or "cyl.axis")
+  Feature feature;
+};
+
+struct ObjectSpec {
+  std::string name;
+  Isometry3d pose = Isometry3d::Identity();  // fixed: X_WF; mobile: initial X_WM
+  std::vector<NamedFeature> features;
+  std::string mesh;  // optional, relative to the spec file
+  const Feature* find(const std::string& feature_name) const;
+};
+
+// One input constraint (SPEC.md §1 "Constraints"). Angles are in radians after parsing.
+struct InputConstraint {
+  std::string type;  // "distance", "angle", "coincident", ... (registry name)
+  std::string id;    // optional user id, echoed in diagnostics
+  Feature fixed;     // already in the fixed object's frame
+  Feature mobile;    // in the mobile object's frame
+  std::string fixed_name, mobile_name;
+  bool has_value = false;
+  double value = 0.0;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  Orientation orientation = Orientation::kAligned;
+  bool parallel = true;  // distance line-line: false = skew distance
+  bool isRange() const { return !has_value; }
+};
+
+struct Problem {
+  std::string name;
+  ObjectSpec fixed;
+  ObjectSpec mobile;
+  std::vector<ObjectSpec> obstacles;
+  std::vector<InputConstraint> constraints;
+
+  // Convenience builders for the C++ API (no JSON).
+  Problem& addFixedFeature(const std::string& name, const Feature& f);
+  Problem& addMobileFeature(const std::string& name, const Feature& f);
+  // Adds a constraint between named features; throws std::invalid_argument on unknown names.
+  Problem& addConstraint(const std::string& type, const std::string& fixed_feature,
+                         const std::string& mobile_feature, double value = 0.0,
+                         Orientation orientation = Orientation::kAligned);
+  // Largest coordinate magnitude: the length scale for tolerances.
+  double lengthScale() const;
+};
+
+}  // namespace relpos

@@ -1,0 +1,124 @@
+#pragma once
+// The one place where constraint types, combination rules and manifold matchers are registered:
+// built-ins through explicit register functions, plugins through the same calls. After set-up
+// the registry is frozen and read concurrently by any number of solves.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "relpos/core/feature.hpp"
+#include "relpos/core/fundamental.hpp"
+#include "relpos/core/problem.hpp"
+#include "relpos/core/rule.hpp"
+
+namespace relpos {
+
+struct Solution;
+
+// --- constraint types -------------------------------------------------------------------------
+inline constexpr std::size_t kMaxDecompositionAlternatives = 2;
+struct Decomposition {
+  // Alternatives (one per orientation for "either"), each a set of fundamental constraints.
+  FixedVector<FixedVector<Fundamental, 4>, kMaxDecompositionAlternatives> alternatives;
+  // Set when this input is valid but cannot be expressed in fundamental constraints yet.
+  const char* unhandled = nullptr;
+  FixedVector<Fundamental, 4>& addAlternative() {
+    alternatives.push_back({});
+    return alternatives[alternatives.size() - 1];
+  }
+};
+
+// fixed_W is c.fixed placed in world coordinates; c.mobile stays in the mobile frame.
+using DecomposeFn = void (*)(const InputConstraint& c, const Feature& fixed_W, SourceMask source,
+                             Decomposition& out);
+// Appends "field: problem" messages for a structurally valid constraint whose values are wrong
+// (e.g. "value: negative distance -1 for an unsigned distance").
+using CheckFn = void (*)(const InputConstraint& c, std::vector<std::string>& problems);
+
+struct FeaturePair {
+  FeatureKind fixed, mobile;
+};
+
+struct ConstraintType {
+  std::string name;
+  std::string description;
+  std::vector<FeaturePair> accepts;
+  bool takes_value = false;  // distance/angle need "value" or "min"/"max"
+  CheckFn check = nullptr;
+  DecomposeFn decompose = nullptr;
+  std::string origin = "built-in";
+  bool accepts_pair(FeatureKind f, FeatureKind m) const;
+};
+
+// --- rules -------------------------------------------------------------------------------------
+struct RuleInfo {
+  std::string name;      // stable, e.g. "pp+pp/equal-span"
+  std::string citation;  // e.g. "PMF App. IV Table I, row 7"
+  FundamentalKind first, second;
+  RuleFn fn = nullptr;
+  std::string origin = "built-in";
+};
+
+// --- manifold matchers -------------------------------------------------------------------------
+// A matcher looks at a fully combined constraint set and either appends branches to the
+// solution (kMatched), proves the set empty (kInconsistent, with `conflict` and `reason`), or
+// passes (kNoMatch).
+enum class MatchResult : unsigned char { kNoMatch, kMatched, kInconsistent, kOverflow };
+struct MatchContext {
+  const ConstraintSet& set;
+  const Tolerance& tol;
+  Solution& out;
+  SourceMask conflict = 0;
+  const char* reason = "";
+};
+using MatchFn = MatchResult (*)(MatchContext& ctx);
+
+struct ManifoldInfo {
+  std::string name;         // manifold type name, e.g. "OneParallel"
+  std::string description;
+  std::string origin = "built-in";
+};
+struct MatcherInfo {
+  std::string name;
+  MatchFn fn = nullptr;
+  std::string origin = "built-in";
+};
+
+class Registry {
+ public:
+  // Each add throws std::invalid_argument on a duplicate name (unless replace is true) or once
+  // the registry is frozen.
+  void addConstraintType(ConstraintType t, bool replace = false);
+  void addRule(RuleInfo r, bool replace = false);
+  void addManifold(ManifoldInfo m, bool replace = false);
+  void addMatcher(MatcherInfo m, bool replace = false);
+  void freeze() { frozen_ = true; }
+  bool frozen() const { return frozen_; }
+
+  const ConstraintType* constraintType(const std::string& name) const;
+  const std::vector<ConstraintType>& constraintTypes() const { return types_; }
+  const std::vector<RuleInfo>& rules() const { return rules_; }
+  const std::vector<ManifoldInfo>& manifolds() const { return manifolds_; }
+  const std::vector<MatcherInfo>& matchers() const { return matchers_; }
+
+  // Rules for an ordered pair of kinds: indices into rules(), with `swapped` telling whether the
+  // rule wants the pair in the opposite order. Built once per registration, never scanned.
+  struct Entry {
+    int rule;
+    bool swapped;
+  };
+  const std::vector<Entry>& rulesFor(FundamentalKind a, FundamentalKind b) const {
+    return table_[static_cast<int>(a)][static_cast<int>(b)];
+  }
+
+ private:
+  void checkOpen() const;
+  bool frozen_ = false;
+  std::vector<ConstraintType> types_;
+  std::vector<RuleInfo> rules_;
+  std::vector<ManifoldInfo> manifolds_;
+  std::vector<MatcherInfo> matchers_;
+  std::array<std::array<std::vector<Entry>, kFundamentalKinds>, kFundamentalKinds> table_;
+};
+
+}  // namespace relpos

@@ -1,0 +1,36 @@
+#pragma once
+// The answer of a solve (SPEC.md §2). Defaults describe a solve that never ran. A Solution can
+// be reused across solves: clear() keeps every buffer's capacity, so repeated solves into the
+// same Solution allocate nothing.
+#include <string>
+#include <vector>
+
+#include "relpos/core/fundamental.hpp"
+#include "relpos/core/manifold.hpp"
+
+namespace relpos {
+
+enum class Status : unsigned char { kNotSolved, kSolved, kInconsistent, kUnhandled };
+const char* toString(Status s);
+
+struct Branch {
+  ManifoldHolder manifold;
+  SourceMask sources = 0;  // input constraints that shaped this branch
+};
+
+struct Solution {
+  Solution();
+  Status status = Status::kNotSolved;
+  std::string message = "relpos::solve was not called.";
+  std::vector<Branch> branches;
+  std::vector<int> conflicts;       // input constraint indices (inconsistent)
+  std::vector<int> redundant;       // input constraint indices implied by the others
+  std::vector<const char*> rules;   // names of rules that fired, in order of first firing
+  double solve_us = 0.0;
+
+  void clear();
+  void noteRule(const char* name);
+  std::string briefReport() const;
+};
+
+}  // namespace relpos

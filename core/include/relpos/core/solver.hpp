@@ -1,0 +1,45 @@
+#pragma once
+// solve(problem, registry, options, workspace, solution): decompose -> combine -> synthesise
+// (ARCHITECTURE.md). Never throws and never reads files on a valid problem; the status says what
+// happened. Reusing the Workspace and the Solution makes repeated solves allocation-free.
+#include <string>
+#include <vector>
+
+#include "relpos/core/fundamental.hpp"
+#include "relpos/core/problem.hpp"
+#include "relpos/core/registry.hpp"
+#include "relpos/core/solution.hpp"
+
+namespace relpos {
+
+struct SolverOptions {
+  int max_branches = 64;      // more alternatives than this -> unhandled
+  int max_rule_steps = 256;   // rewrite steps per constraint set before giving up (unhandled)
+  bool isValid(std::string* why) const;
+};
+
+class Workspace {
+ public:
+  Workspace();
+  // Internal buffers (public for the solver's translation units; not part of the API contract).
+  std::vector<ConstraintSet> pending;  // constraint sets still to combine (the branch stack)
+  std::vector<Fundamental> scratch;
+  RuleOutput rule_out;
+};
+
+void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
+           Workspace& workspace, Solution& solution);
+
+// Convenience: a fresh workspace and solution.
+Solution solve(const Problem& problem, const Registry& registry,
+               const SolverOptions& options = SolverOptions());
+
+// Fills `nearest` parameters for every branch: see nearestParams.
+struct NearestPose {
+  Params parameters{};
+  Isometry3d pose = Isometry3d::Identity();
+  double distance = 0.0;
+};
+NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial);
+
+}  // namespace relpos

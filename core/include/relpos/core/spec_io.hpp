@@ -1,0 +1,46 @@
+#pragma once
+// Reading specs and writing results (SPEC.md §1–2). Bad input never throws out of these
+// functions: every problem found becomes a Diagnostic naming the JSON path and what is wrong.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "relpos/core/problem.hpp"
+#include "relpos/core/registry.hpp"
+#include "relpos/core/solution.hpp"
+
+namespace relpos {
+
+struct Diagnostic {
+  std::string path;     // JSON path, e.g. "constraints[3].mobile"; "" for the whole document
+  std::string message;  // what is wrong
+};
+
+struct ParseResult {
+  std::optional<Problem> problem;  // set only when there are no errors
+  std::vector<Diagnostic> errors;
+  std::vector<Diagnostic> warnings;
+};
+
+// `default_name` is used when the spec has no "name" (the file name without extension).
+ParseResult parseSpec(const std::string& text, const Registry& registry,
+                      const std::string& default_name = "spec");
+ParseResult parseSpecFile(const std::string& file, const Registry& registry);
+
+// "file: path: message" (path omitted when empty).
+std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
+
+struct ResultOptions {
+  int samples = 0;       // poses per branch (--samples)
+  double window = 1.0;   // half-width for unbounded length parameters (--window)
+  std::uint64_t seed = 0;
+};
+
+// The result document of SPEC.md §2: nearest pose per branch, best, samples, etc.
+nlohmann::json resultToJson(const Problem& problem, const Solution& solution,
+                            const ResultOptions& options);
+
+}  // namespace relpos

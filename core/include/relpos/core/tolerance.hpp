@@ -1,0 +1,25 @@
+#pragma once
+// One tolerance for every rule condition ("parallel", "d_a = 0", "p = q"): never a bare epsilon in
+// a rule. Lengths scale with the problem's size so that millimetre and metre specs behave alike.
+#include <cmath>
+
+namespace relpos {
+
+struct Tolerance {
+  double length = 1e-9;  // absolute length tolerance, already scaled
+  double angle = 1e-9;   // radians
+
+  static Tolerance forScale(double scale) {
+    Tolerance t;
+    t.length = 1e-9 * (scale > 1.0 ? scale : 1.0);
+    return t;
+  }
+  bool zeroLength(double v) const { return std::abs(v) <= length; }
+  bool equalLength(double a, double b) const { return std::abs(a - b) <= length; }
+  bool zeroAngle(double v) const { return std::abs(v) <= angle; }
+  bool equalAngle(double a, double b) const { return std::abs(a - b) <= angle; }
+  // |sin| of the angle between two unit vectors is below the angle tolerance.
+  bool parallelUnit(double cross_norm) const { return cross_norm <= angle; }
+};
+
+}  // namespace relpos

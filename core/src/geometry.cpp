@@ -1,0 +1,70 @@
+#include "relpos/core/geometry.hpp"
+
+#include <cmath>
+
+namespace relpos {
+
+Vector3d anyPerpendicular(const Vector3d& u) {
+  // Cross with the world axis least aligned with u: well conditioned and deterministic.
+  Vector3d a = u.cwiseAbs();
+  Vector3d axis = (a.x() <= a.y() && a.x() <= a.z())   ? Vector3d::UnitX()
+                  : (a.y() <= a.z())                    ? Vector3d::UnitY()
+                                                        : Vector3d::UnitZ();
+  return u.cross(axis).normalized();
+}
+
+Matrix3d rotationBetween(const Vector3d& from, const Vector3d& to) {
+  Vector3d w = from.cross(to);
+  double s = w.norm();
+  double c = from.dot(to);
+  if (s < 1e-15) {
+    if (c > 0) return Matrix3d::Identity();
+    return axisAngle(anyPerpendicular(from), kPi);
+  }
+  return axisAngle(w / s, std::atan2(s, c));
+}
+
+namespace {
+// PMF App. I: orthonormal basis {u, v_u, w} of two independent unit vectors, as matrix columns.
+Matrix3d basisOf(const Vector3d& u, const Vector3d& v) {
+  Vector3d vu = (v - u.dot(v) * u).normalized();
+  Matrix3d B;
+  B.col(0) = u;
+  B.col(1) = vu;
+  B.col(2) = u.cross(vu);
+  return B;
+}
+}  // namespace
+
+Matrix3d rotationPairs(const Vector3d& u, const Vector3d& v, const Vector3d& r,
+                       const Vector3d& s) {
+  return basisOf(r, s) * basisOf(u, v).transpose();
+}
+
+double angleBetween(const Vector3d& a, const Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
+  return Eigen::AngleAxisd(a.transpose() * b).angle();
+}
+
+bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,
+                          const Vector3d& d2, double parallel_tol, Vector3d* foot1,
+                          Vector3d* foot2) {
+  Vector3d n = d1.cross(d2);
+  double s2 = n.squaredNorm();
+  if (std::sqrt(s2) <= parallel_tol) {
+    *foot1 = a1;
+    *foot2 = projectOnLine(a1, a2, d2);
+    return false;
+  }
+  Vector3d r = a2 - a1;
+  double t1 = r.cross(d2).dot(n) / s2;
+  double t2 = r.cross(d1).dot(n) / s2;
+  *foot1 = a1 + t1 * d1;
+  *foot2 = a2 + t2 * d2;
+  return true;
+}
+
+}  // namespace relpos

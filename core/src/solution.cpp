@@ -1,0 +1,61 @@
+#include "relpos/core/solution.hpp"
+
+#include <cstring>
+#include <sstream>
+
+namespace relpos {
+
+const char* toString(Status s) {
+  switch (s) {
+    case Status::kNotSolved: return "not-solved";
+    case Status::kSolved: return "solved";
+    case Status::kInconsistent: return "inconsistent";
+    case Status::kUnhandled: return "unhandled";
+  }
+  return "?";
+}
+
+const char* toString(ParamKind k) {
+  switch (k) {
+    case ParamKind::kAngle: return "angle";
+    case ParamKind::kLength: return "length";
+    case ParamKind::kOther: return "other";
+  }
+  return "other";
+}
+
+Solution::Solution() {
+  branches.reserve(64);
+  conflicts.reserve(64);
+  redundant.reserve(64);
+  rules.reserve(64);
+  message.reserve(512);
+}
+
+void Solution::clear() {
+  status = Status::kNotSolved;
+  message.clear();
+  branches.clear();
+  conflicts.clear();
+  redundant.clear();
+  rules.clear();
+  solve_us = 0.0;
+}
+
+void Solution::noteRule(const char* name) {
+  for (const char* r : rules)
+    if (r == name || std::strcmp(r, name) == 0) return;
+  rules.push_back(name);
+}
+
+std::string Solution::briefReport() const {
+  std::ostringstream os;
+  os << toString(status) << ": " << branches.size() << " branch(es)";
+  for (std::size_t i = 0; i < branches.size(); ++i)
+    os << (i ? ", " : " [") << branches[i].manifold->dof() << " DOF"
+       << (i + 1 == branches.size() ? "]" : "");
+  if (!message.empty()) os << " — " << message;
+  return os.str();
+}
+
+}  // namespace relpos

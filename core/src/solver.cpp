@@ -1,0 +1,278 @@
+#include "relpos/core/solver.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace relpos {
+
+bool SolverOptions::isValid(std::string* why) const {
+  if (max_branches < 1 || max_branches > 4096) {
+    if (why) *why = "max_branches must be in [1, 4096]";
+    return false;
+  }
+  if (max_rule_steps < 1) {
+    if (why) *why = "max_rule_steps must be positive";
+    return false;
+  }
+  return true;
+}
+
+Workspace::Workspace() {
+  pending.reserve(64);
+  scratch.reserve(kMaxFundamentals);
+}
+
+namespace {
+
+enum class SetOutcome { kCombined, kInconsistent, kUnhandled };
+
+struct SolveState {
+  const Registry& registry;
+  const SolverOptions& options;
+  const Tolerance& tol;
+  Workspace& ws;
+  Solution& solution;
+  SourceMask conflicts = 0;
+  const char* conflict_reason = "";
+  std::string unhandled;  // first reason an alternative could not be decided
+  bool any_unhandled = false;
+};
+
+void setUnhandled(SolveState& st, const std::string& why) {
+  if (!st.any_unhandled) st.unhandled = why;
+  st.any_unhandled = true;
+}
+
+std::string describeSet(const ConstraintSet& set) {
+  std::string s;
+  auto list = [&s](const char* title, const auto& v) {
+    if (v.empty()) return;
+    s += title;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      s += i ? ", " : " ";
+      s += toString(v[i].kind);
+      char buf[64];
+      std::snprintf(buf, sizeof buf, " %.6g", v[i].value());
+      s += buf;
+      s += " (from constraint";
+      for (int k = 0; k < 64; ++k)
+        if (v[i].sources >> k & 1) s += " " + std::to_string(k);
+      s += ")";
+    }
+    s += ";";
+  };
+  list(" translational:", set.translational);
+  list(" rotational:", set.rotational);
+  return s;
+}
+
+// Rewrites one list (C_T or C_R) of `set` pairwise until no rule applies. Alternatives other than
+// the first are pushed onto the workspace's pending stack.
+SetOutcome combineList(SolveState& st, std::size_t set_index, bool translational, int& steps) {
+  RuleOutput& out = st.ws.rule_out;
+restart:
+  ConstraintSet& set = st.ws.pending[set_index];
+  auto& list = translational ? set.translational : set.rotational;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    for (std::size_t j = i + 1; j < list.size(); ++j) {
+      for (const auto& entry : st.registry.rulesFor(list[i].kind, list[j].kind)) {
+        const RuleInfo& rule = st.registry.rules()[entry.rule];
+        const Fundamental& a = entry.swapped ? list[j] : list[i];
+        const Fundamental& b = entry.swapped ? list[i] : list[j];
+        out.reset();
+        rule.fn(a, b, st.tol, out);
+        if (out.verdict == RuleVerdict::kNoChange) continue;
+        st.solution.noteRule(rule.name.c_str());
+        if (++steps > st.options.max_rule_steps) {
+          setUnhandled(st, "the combination rules did not settle within " +
+                               std::to_string(st.options.max_rule_steps) + " steps");
+          return SetOutcome::kUnhandled;
+        }
+        const SourceMask both = a.sources | b.sources;
+        switch (out.verdict) {
+          case RuleVerdict::kIncompatible:
+            st.conflicts |= both;
+            st.conflict_reason = out.reason;
+            return SetOutcome::kInconsistent;
+          case RuleVerdict::kRedundantFirst:
+          case RuleVerdict::kRedundantSecond: {
+            bool drop_a = out.verdict == RuleVerdict::kRedundantFirst;
+            std::size_t drop = (drop_a != entry.swapped) ? i : j;
+            set.dropped_redundant |= list[drop].sources;
+            list.erase(drop);
+            goto restart;
+          }
+          case RuleVerdict::kReplace: {
+            // Remove the pair, then add each alternative's constraints (sources: both inputs).
+            list.erase(j);
+            list.erase(i);
+            for (std::size_t k = 1; k < out.alternatives.size(); ++k) {
+              if (static_cast<int>(st.ws.pending.size()) >= st.options.max_branches) {
+                setUnhandled(st, "more than " + std::to_string(st.options.max_branches) +
+                                     " alternative constraint sets");
+                return SetOutcome::kUnhandled;
+              }
+              st.ws.pending.push_back(st.ws.pending[set_index]);
+              ConstraintSet& alt = st.ws.pending.back();
+              for (Fundamental f : out.alternatives[k]) {
+                f.sources |= both;
+                alt.add(f);
+              }
+            }
+            ConstraintSet& cur = st.ws.pending[set_index];
+            for (Fundamental f : out.alternatives[0]) {
+              f.sources |= both;
+              cur.add(f);
+            }
+            if (cur.overflow) {
+              setUnhandled(st, "too many fundamental constraints");
+              return SetOutcome::kUnhandled;
+            }
+            goto restart;
+          }
+          case RuleVerdict::kNoChange: break;
+        }
+      }
+    }
+  }
+  return SetOutcome::kCombined;
+}
+
+void decomposeAll(const Problem& problem, SolveState& st) {
+  auto& pending = st.ws.pending;
+  pending.clear();
+  pending.emplace_back();
+  pending.back().clear();
+  Decomposition dec;
+  for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
+    const InputConstraint& c = problem.constraints[i];
+    const ConstraintType* type = st.registry.constraintType(c.type);
+    if (!type || !type->decompose) {
+      setUnhandled(st, "constraint " + std::to_string(i) + ": no decomposition for type '" +
+                           c.type + "'");
+      return;
+    }
+    dec.alternatives.clear();
+    dec.unhandled = nullptr;
+    Feature fixed_W = c.fixed.placed(problem.fixed.pose);
+    type->decompose(c, fixed_W, SourceMask{1} << i, dec);
+    if (dec.unhandled) {
+      setUnhandled(st, "constraint " + std::to_string(i) + " (" + c.type + " " +
+                           toString(c.fixed.kind) + "-" + toString(c.mobile.kind) +
+                           "): " + dec.unhandled);
+      return;
+    }
+    const std::size_t n = pending.size();
+    for (std::size_t k = 1; k < dec.alternatives.size(); ++k) {
+      if (pending.size() + n > static_cast<std::size_t>(st.options.max_branches)) {
+        setUnhandled(st, "more than " + std::to_string(st.options.max_branches) +
+                             " alternative constraint sets");
+        return;
+      }
+      for (std::size_t s = 0; s < n; ++s) {
+        pending.push_back(pending[s]);
+        for (const Fundamental& f : dec.alternatives[k]) pending.back().add(f);
+      }
+    }
+    for (std::size_t s = 0; s < n; ++s)
+      for (const Fundamental& f : dec.alternatives[0]) pending[s].add(f);
+  }
+}
+
+void listBits(SourceMask m, std::vector<int>& out) {
+  for (int k = 0; k < 64; ++k)
+    if (m >> k & 1) out.push_back(k);
+}
+
+}  // namespace
+
+void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
+           Workspace& ws, Solution& solution) {
+  const auto t0 = std::chrono::steady_clock::now();
+  solution.clear();
+  const Tolerance tol = Tolerance::forScale(problem.lengthScale());
+  SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
+
+  std::string why;
+  if (!options.isValid(&why)) {
+    setUnhandled(st, "invalid solver options: " + why);
+  } else if (problem.constraints.size() > 64) {
+    setUnhandled(st, "more than 64 constraints");
+  } else {
+    decomposeAll(problem, st);
+  }
+
+  SourceMask redundant = ~SourceMask{0};
+  bool any_solved_set = false;
+  for (std::size_t s = 0; !st.any_unhandled && s < ws.pending.size(); ++s) {
+    if (ws.pending[s].overflow) {
+      setUnhandled(st, "too many fundamental constraints");
+      break;
+    }
+    int steps = 0;
+    SetOutcome o = combineList(st, s, true, steps);
+    if (o == SetOutcome::kCombined) o = combineList(st, s, false, steps);
+    if (o == SetOutcome::kUnhandled) break;
+    if (o == SetOutcome::kInconsistent) continue;
+    const ConstraintSet& set = ws.pending[s];
+    const std::size_t before = solution.branches.size();
+    MatchResult r = MatchResult::kNoMatch;
+    for (const MatcherInfo& m : registry.matchers()) {
+      MatchContext ctx{set, tol, solution};
+      r = m.fn(ctx);
+      if (r == MatchResult::kInconsistent) {
+        st.conflicts |= ctx.conflict;
+        st.conflict_reason = ctx.reason;
+      }
+      if (r != MatchResult::kNoMatch) break;
+    }
+    if (r == MatchResult::kNoMatch) {
+      setUnhandled(st, "no solution manifold matches the combined constraints:" +
+                           describeSet(set));
+      break;
+    }
+    if (r == MatchResult::kOverflow) {
+      setUnhandled(st, "too many solution branches");
+      break;
+    }
+    if (r == MatchResult::kMatched) {
+      any_solved_set = true;
+      redundant &= set.dropped_redundant & ~set.usedSources();
+      for (std::size_t b = before; b < solution.branches.size(); ++b)
+        solution.branches[b].sources |= set.usedSources();
+    }
+  }
+
+  if (st.any_unhandled) {
+    solution.status = Status::kUnhandled;
+    solution.branches.clear();
+    solution.message = st.unhandled;
+  } else if (!solution.branches.empty()) {
+    solution.status = Status::kSolved;
+    if (any_solved_set) listBits(redundant, solution.redundant);
+  } else {
+    solution.status = Status::kInconsistent;
+    listBits(st.conflicts, solution.conflicts);
+    solution.message = st.conflict_reason;
+  }
+  solution.solve_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Solution solve(const Problem& problem, const Registry& registry, const SolverOptions& options) {
+  Workspace ws;
+  Solution s;
+  solve(problem, registry, options, ws, s);
+  return s;
+}
+
+NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial) {
+  NearestPose n;
+  n.parameters = nearestParams(*b.manifold, X_WM_initial);
+  n.pose = b.manifold->pose(n.parameters);
+  n.distance = poseDistance(n.pose, X_WM_initial);
+  return n;
+}
+
+}  // namespace relpos

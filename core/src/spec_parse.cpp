@@ -1,0 +1,507 @@
+// Spec parsing (SPEC.md §1). Collects every problem it finds rather than stopping at the first,
+// so a user fixes a spec in one round.
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "relpos/core/spec_io.hpp"
+
+namespace relpos {
+namespace {
+
+using nlohmann::json;
+
+class Parser {
+ public:
+  Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
+
+  void error(const std::string& path, const std::string& msg) { out_.errors.push_back({path, msg}); }
+  void warn(const std::string& path, const std::string& msg) {
+    out_.warnings.push_back({path, msg});
+  }
+
+  void unknownFields(const json& obj, const std::string& path,
+                     std::initializer_list<const char*> known) {
+    if (!obj.is_object()) return;
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || it.key() == k;
+      if (!ok) warn(join(path, it.key()), "unknown field (ignored)");
+    }
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  bool number(const json& j, const std::string& path, double* v) {
+    if (!j.is_number()) {
+      error(path, std::string("expected a number, got ") + j.type_name());
+      return false;
+    }
+    *v = j.get<double>();
+    if (!std::isfinite(*v)) {
+      error(path, "not a finite number");
+      return false;
+    }
+    return true;
+  }
+
+  bool vec(const json& j, const std::string& path, int n, double* v) {
+    if (!j.is_array() || static_cast<int>(j.size()) != n) {
+      error(path, "expected an array of " + std::to_string(n) + " numbers");
+      return false;
+    }
+    bool ok = true;
+    for (int i = 0; i < n; ++i) ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
+    return ok;
+  }
+
+  bool vec3(const json& j, const std::string& path, Vector3d* v) {
+    double a[3];
+    if (!vec(j, path, 3, a)) return false;
+    *v = Vector3d(a[0], a[1], a[2]);
+    return true;
+  }
+
+  bool direction(const json& parent, const std::string& path, const char* key, Vector3d* v) {
+    if (!parent.contains(key)) {
+      error(join(path, key), "missing");
+      return false;
+    }
+    if (!vec3(parent[key], join(path, key), v)) return false;
+    if (v->norm() < 1e-12) {
+      error(join(path, key), "zero-length direction");
+      return false;
+    }
+    v->normalize();
+    return true;
+  }
+
+  bool point(const json& parent, const std::string& path, const char* key, Vector3d* v) {
+    if (!parent.contains(key)) {
+      error(join(path, key), "missing");
+      return false;
+    }
+    return vec3(parent[key], join(path, key), v);
+  }
+
+  double angleUnit() const { return deg_ ? kPi / 180.0 : 1.0; }
+
+  void units(const json& j) {
+    if (!j.is_object()) return error("units", "expected an object");
+    unknownFields(j, "units", {"length", "angle"});
+    if (j.contains("length") && !j["length"].is_string())
+      error("units.length", "expected a string");
+    if (j.contains("angle")) {
+      const json& a = j["angle"];
+      if (a == "deg") deg_ = true;
+      else if (a != "rad") error("units.angle", "expected \"rad\" or \"deg\"");
+    }
+  }
+
+  bool pose(const json& j, const std::string& path, Isometry3d* X) {
+    *X = Isometry3d::Identity();
+    if (!j.is_object()) {
+      error(path, "expected a pose object");
+      return false;
+    }
+    unknownFields(j, path, {"position", "orientation", "rpy", "matrix"});
+    bool ok = true;
+    if (j.contains("matrix")) {
+      if (j.contains("position") || j.contains("orientation") || j.contains("rpy")) {
+        error(path, "give either \"matrix\" or \"position\"/\"orientation\"/\"rpy\", not both");
+        return false;
+      }
+      const json& m = j["matrix"];
+      const std::string mp = join(path, "matrix");
+      if (!m.is_array() || m.size() != 4) {
+        error(mp, "expected 4 rows of 4 numbers");
+        return false;
+      }
+      Eigen::Matrix4d M;
+      for (int r = 0; r < 4; ++r) {
+        double row[4];
+        if (!vec(m[r], mp + "[" + std::to_string(r) + "]", 4, row)) return false;
+        for (int c = 0; c < 4; ++c) M(r, c) = row[c];
+      }
+      Matrix3d R = M.topLeftCorner<3, 3>();
+      bool rigid = (R.transpose() * R - Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
+                   std::abs(R.determinant() - 1.0) < 1e-6 &&
+                   (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() < 1e-12;
+      if (!rigid) {
+        error(mp, "not a rigid transform (rotation must be orthonormal with determinant +1, "
+                  "last row [0, 0, 0, 1])");
+        return false;
+      }
+      // Re-orthonormalise so later maths sees an exact rotation.
+      X->linear() = Quaterniond(R).normalized().toRotationMatrix();
+      X->translation() = M.topRightCorner<3, 1>();
+      return true;
+    }
+    if (j.contains("position")) {
+      Vector3d p;
+      if (vec3(j["position"], join(path, "position"), &p)) X->translation() = p;
+      else ok = false;
+    }
+    if (j.contains("orientation") && j.contains("rpy")) {
+      error(path, "give either \"orientation\" or \"rpy\", not both");
+      return false;
+    }
+    if (j.contains("orientation")) {
+      double q[4];
+      if (!vec(j["orientation"], join(path, "orientation"), 4, q)) return false;
+      Quaterniond quat(q[3], q[0], q[1], q[2]);
+      if (quat.norm() < 1e-12) {
+        error(join(path, "orientation"), "zero quaternion");
+        return false;
+      }
+      X->linear() = quat.normalized().toRotationMatrix();
+    }
+    if (j.contains("rpy")) {
+      double r[3];
+      if (!vec(j["rpy"], join(path, "rpy"), 3, r)) return false;
+      const double k = angleUnit();
+      X->linear() = (Eigen::AngleAxisd(r[2] * k, Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(r[1] * k, Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(r[0] * k, Vector3d::UnitX()))
+                        .toRotationMatrix();
+    }
+    return ok;
+  }
+
+  bool feature(const json& j, const std::string& path, Feature* f) {
+    if (!j.is_object() || j.size() != 1) {
+      error(path, "expected an object with exactly one of \"point\", \"line\", \"plane\", "
+                  "\"cylinder\"");
+      return false;
+    }
+    const std::string kind = j.begin().key();
+    const json& b = j.begin().value();
+    const std::string bp = join(path, kind);
+    Vector3d p, d;
+    if (kind == "point") {
+      if (!vec3(b, bp, &p)) return false;
+      *f = Feature::makePoint(p);
+      return true;
+    }
+    if (kind != "line" && kind != "plane" && kind != "cylinder") {
+      error(bp, "unknown feature kind '" + kind + "' (expected point, line, plane or cylinder)");
+      return false;
+    }
+    if (!b.is_object()) {
+      error(bp, "expected an object");
+      return false;
+    }
+    const char* dir_key = kind == "plane" ? "normal" : "direction";
+    if (kind == "cylinder") unknownFields(b, bp, {"point", "direction", "radius"});
+    else unknownFields(b, bp, {"point", dir_key});
+    bool ok = point(b, bp, "point", &p);
+    ok = direction(b, bp, dir_key, &d) && ok;
+    if (kind == "cylinder") {
+      double r = 0;
+      if (!b.contains("radius")) {
+        error(join(bp, "radius"), "missing");
+        ok = false;
+      } else if (number(b["radius"], join(bp, "radius"), &r) && r <= 0) {
+        error(join(bp, "radius"), "radius must be positive");
+        ok = false;
+      }
+      if (ok) *f = Feature::makeCylinder(p, d, r);
+      return ok;
+    }
+    if (ok) *f = kind == "line" ? Feature::makeLine(p, d) : Feature::makePlane(p, d);
+    return ok;
+  }
+
+  void object(const json& j, const std::string& path, ObjectSpec* o, bool features_required) {
+    if (!j.is_object()) return error(path, "expected an object");
+    unknownFields(j, path, {"name", "pose", "features", "mesh"});
+    o->name = path;
+    if (j.contains("name")) {
+      if (j["name"].is_string()) o->name = j["name"].get<std::string>();
+      else error(join(path, "name"), "expected a string");
+    }
+    if (j.contains("pose")) pose(j["pose"], join(path, "pose"), &o->pose);
+    if (j.contains("mesh")) {
+      if (j["mesh"].is_string()) o->mesh = j["mesh"].get<std::string>();
+      else error(join(path, "mesh"), "expected a file name");
+    }
+    if (!j.contains("features")) {
+      if (features_required) error(join(path, "features"), "missing");
+      return;
+    }
+    const json& fs = j["features"];
+    if (!fs.is_object()) return error(join(path, "features"), "expected an object");
+    for (auto it = fs.begin(); it != fs.end(); ++it) {
+      Feature f;
+      if (feature(it.value(), join(join(path, "features"), it.key()), &f))
+        o->features.push_back({it.key(), f});
+    }
+  }
+
+  // Resolves a feature name, including "name.axis" for a cylinder's axis.
+  bool resolve(const json& j, const std::string& path, const ObjectSpec& o, const char* role,
+               std::string* name, Feature* f) {
+    if (!j.is_string()) {
+      error(path, "expected a feature name");
+      return false;
+    }
+    *name = j.get<std::string>();
+    if (const Feature* x = o.find(*name)) {
+      *f = *x;
+      return true;
+    }
+    const std::string suffix = ".axis";
+    if (name->size() > suffix.size() &&
+        name->compare(name->size() - suffix.size(), suffix.size(), suffix) == 0) {
+      const std::string base = name->substr(0, name->size() - suffix.size());
+      if (const Feature* x = o.find(base)) {
+        if (x->kind == FeatureKind::kCylinder) {
+          *f = x->axis();
+          return true;
+        }
+        error(path, "'" + base + "' is a " + toString(x->kind) +
+                        ", only a cylinder has an axis");
+        return false;
+      }
+    }
+    std::string have;
+    for (const auto& nf : o.features) have += (have.empty() ? "" : ", ") + nf.name;
+    error(path, "no feature '" + *name + "' on " + role + " object '" + o.name + "' (it has: " +
+                    (have.empty() ? "no features" : have) + ")");
+    return false;
+  }
+
+  void constraint(const json& j, const std::string& path, const Problem& pb, InputConstraint* c,
+                  bool* ok_out) {
+    *ok_out = false;
+    if (!j.is_object()) return error(path, "expected an object");
+    unknownFields(j, path, {"type", "fixed", "mobile", "value", "min", "max", "orientation",
+                            "parallel", "id"});
+    bool ok = true;
+    if (j.contains("id")) {
+      if (j["id"].is_string()) c->id = j["id"].get<std::string>();
+      else error(join(path, "id"), "expected a string"), ok = false;
+    }
+    const ConstraintType* type = nullptr;
+    if (!j.contains("type")) {
+      error(join(path, "type"), "missing");
+      ok = false;
+    } else if (!j["type"].is_string()) {
+      error(join(path, "type"), "expected a string");
+      ok = false;
+    } else {
+      c->type = j["type"].get<std::string>();
+      type = reg_.constraintType(c->type);
+      if (!type) {
+        std::string known;
+        for (const auto& t : reg_.constraintTypes()) known += (known.empty() ? "" : ", ") + t.name;
+        error(join(path, "type"), "unknown constraint type '" + c->type +
+                                      "' (load the plugin that provides it; known: " + known + ")");
+        ok = false;
+      }
+    }
+    for (const char* role : {"fixed", "mobile"}) {
+      if (!j.contains(role)) {
+        error(join(path, role), "missing");
+        ok = false;
+      }
+    }
+    bool have_f = j.contains("fixed") &&
+                  resolve(j["fixed"], join(path, "fixed"), pb.fixed, "fixed", &c->fixed_name,
+                          &c->fixed);
+    bool have_m = j.contains("mobile") &&
+                  resolve(j["mobile"], join(path, "mobile"), pb.mobile, "mobile",
+                          &c->mobile_name, &c->mobile);
+    ok = ok && have_f && have_m;
+    if (type && have_f && have_m && !type->accepts_pair(c->fixed.kind, c->mobile.kind)) {
+      std::string acc;
+      for (const auto& p : type->accepts)
+        acc += (acc.empty() ? "" : ", ") + std::string(toString(p.fixed)) + "-" + toString(p.mobile);
+      error(path, "constraint type '" + c->type + "' does not accept " + toString(c->fixed.kind) +
+                      "-" + toString(c->mobile.kind) + " features (fixed-mobile; accepts: " + acc +
+                      ")");
+      ok = false;
+    }
+    // Values.
+    const bool angle_type = c->type == "angle";
+    const double k = angle_type ? angleUnit() : 1.0;
+    bool vals_ok = true;
+    auto num = [&](const char* key, double* v) {
+      if (!j.contains(key)) return false;
+      if (!number(j[key], join(path, key), v)) {
+        vals_ok = false;
+        return false;
+      }
+      *v *= k;
+      return true;
+    };
+    double v;
+    if (num("value", &v)) c->has_value = true, c->value = c->min = c->max = v;
+    bool has_min = num("min", &c->min), has_max = num("max", &c->max);
+    if (c->has_value && (has_min || has_max)) {
+      error(path, "give either \"value\" or \"min\"/\"max\", not both");
+      vals_ok = false;
+    }
+    if (type && type->takes_value && !c->has_value && !has_min && !has_max && vals_ok) {
+      error(join(path, "value"), "missing (a '" + c->type + "' constraint needs \"value\" or "
+                                 "\"min\"/\"max\")");
+      vals_ok = false;
+    }
+    if (type && !type->takes_value) {
+      for (const char* key : {"value", "min", "max"})
+        if (j.contains(key)) warn(join(path, key), "ignored: '" + c->type + "' takes no value");
+      c->has_value = true;
+      c->value = c->min = c->max = 0.0;
+    }
+    if (has_min && has_max && c->min > c->max) {
+      error(path, "min " + num2s(c->min / k) + " is greater than max " + num2s(c->max / k));
+      vals_ok = false;
+    }
+    if (j.contains("orientation")) {
+      const json& o = j["orientation"];
+      if (o == "aligned") c->orientation = Orientation::kAligned;
+      else if (o == "opposed") c->orientation = Orientation::kOpposed;
+      else if (o == "either") c->orientation = Orientation::kEither;
+      else error(join(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\""),
+          vals_ok = false;
+    }
+    if (j.contains("parallel")) {
+      if (!j["parallel"].is_boolean()) {
+        error(join(path, "parallel"), "expected true or false");
+        vals_ok = false;
+      } else {
+        c->parallel = j["parallel"].get<bool>();
+        if (!(c->type == "distance" && c->fixed.kind == FeatureKind::kLine &&
+              c->mobile.kind == FeatureKind::kLine))
+          warn(join(path, "parallel"), "only meaningful for a line-line distance (ignored)");
+      }
+    }
+    if (ok && vals_ok && type && type->check) {
+      std::vector<std::string> problems;
+      type->check(*c, problems);
+      for (const auto& p : problems) {
+        // "field: message" -> path.field: message
+        auto colon = p.find(": ");
+        if (colon == std::string::npos) error(path, p);
+        else error(join(path, p.substr(0, colon)), p.substr(colon + 2));
+        vals_ok = false;
+      }
+    }
+    *ok_out = ok && vals_ok;
+  }
+
+  static std::string num2s(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+  }
+
+  void document(const json& j, const std::string& default_name) {
+    if (!j.is_object()) return error("", "the spec must be a JSON object");
+    unknownFields(j, "", {"relpos", "name", "units", "fixed", "mobile", "obstacles",
+                          "constraints", "plugins"});
+    if (j.contains("relpos") && j["relpos"] != 1)
+      error("relpos", "unsupported format version (this relpos reads version 1)");
+    Problem pb;
+    pb.name = default_name;
+    if (j.contains("name")) {
+      if (j["name"].is_string()) pb.name = j["name"].get<std::string>();
+      else error("name", "expected a string");
+    }
+    if (j.contains("units")) units(j["units"]);
+    for (const char* role : {"fixed", "mobile", "constraints"})
+      if (!j.contains(role)) error(role, "missing");
+    if (j.contains("fixed")) object(j["fixed"], "fixed", &pb.fixed, true);
+    if (j.contains("mobile")) object(j["mobile"], "mobile", &pb.mobile, true);
+    if (j.contains("obstacles")) {
+      const json& obs = j["obstacles"];
+      if (!obs.is_array()) error("obstacles", "expected an array");
+      else
+        for (std::size_t i = 0; i < obs.size(); ++i) {
+          ObjectSpec o;
+          object(obs[i], "obstacles[" + std::to_string(i) + "]", &o, false);
+          pb.obstacles.push_back(o);
+        }
+    }
+    if (j.contains("plugins") && !j["plugins"].is_array())
+      error("plugins", "expected an array of plugin paths");
+    if (j.contains("constraints")) {
+      const json& cs = j["constraints"];
+      if (!cs.is_array()) {
+        error("constraints", "expected an array");
+      } else {
+        if (cs.empty()) warn("constraints", "no constraints: every pose is a solution");
+        for (std::size_t i = 0; i < cs.size(); ++i) {
+          InputConstraint c;
+          bool ok = false;
+          constraint(cs[i], "constraints[" + std::to_string(i) + "]", pb, &c, &ok);
+          if (ok) pb.constraints.push_back(c);
+        }
+      }
+    }
+    if (out_.errors.empty()) out_.problem = std::move(pb);
+  }
+
+ private:
+  const Registry& reg_;
+  ParseResult& out_;
+  bool deg_ = false;
+};
+
+// Line and column of a byte offset (1-based), for parse errors.
+void lineColumn(const std::string& text, std::size_t byte, std::size_t* line, std::size_t* col) {
+  *line = 1;
+  *col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++*line, *col = 1;
+    else ++*col;
+  }
+}
+
+}  // namespace
+
+ParseResult parseSpec(const std::string& text, const Registry& registry,
+                      const std::string& default_name) {
+  ParseResult out;
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::size_t line, col;
+    lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, &line, &col);
+    std::string what = e.what();
+    auto p = what.find("parse error");
+    out.errors.push_back({"", "malformed JSON at line " + std::to_string(line) + ", column " +
+                                  std::to_string(col) + ": " +
+                                  (p == std::string::npos ? what : what.substr(p))});
+    return out;
+  }
+  Parser(registry, out).document(j, default_name);
+  return out;
+}
+
+ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    ParseResult out;
+    out.errors.push_back({"", "cannot read the file"});
+    return out;
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string base = file.substr(file.find_last_of('/') + 1);
+  auto dot = base.rfind('.');
+  if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
+  return parseSpec(ss.str(), registry, base);
+}
+
+std::string formatDiagnostic(const std::string& file, const Diagnostic& d) {
+  return file + ": " + (d.path.empty() ? "" : d.path + ": ") + d.message;
+}
+
+}  // namespace relpos

@@ -1,0 +1,31 @@
+#include "relpos/manifolds/separable.hpp"
+
+namespace relpos::manifolds {
+
+Parameter SeparableManifold::parameter(int i) const {
+  const int r = rot_.dof();
+  return i < r ? rot_.parameter(i) : trans_.parameter(i - r);
+}
+
+Isometry3d SeparableManifold::pose(const Params& theta) const {
+  Isometry3d X = Isometry3d::Identity();
+  X.linear() = rot_.rotation(theta.data());
+  X.translation() = trans_.translation(X.linear(), theta.data() + rot_.dof());
+  return X;
+}
+
+Params SeparableManifold::project(const Isometry3d& X) const {
+  // PMF 003 §V: rotation first (the translation set depends on it), then translation.
+  Params theta{};
+  rot_.project(X.linear(), theta.data());
+  const Matrix3d R = rot_.rotation(theta.data());
+  trans_.project(R, X.translation(), theta.data() + rot_.dof());
+  return theta;
+}
+
+std::string SeparableManifold::describe() const {
+  return std::string("rotation ") + toString(rot_.kind) + ", translation " +
+         toString(trans_.kind);
+}
+
+}  // namespace relpos::manifolds

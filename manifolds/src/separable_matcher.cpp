@@ -1,0 +1,291 @@
+// The separable matcher (PMF §V, Algorithm 1): matches the combined rotational set to a row of
+// Table III and the combined translational set to a row of Table IV, and emits one branch per
+// rotational solution.
+#include <cmath>
+
+#include "relpos/core/solution.hpp"
+#include "relpos/manifolds/builtin.hpp"
+#include "relpos/manifolds/separable.hpp"
+
+namespace relpos::manifolds {
+namespace {
+
+constexpr int kMaxRotations = 8;
+
+struct RotationAlternatives {
+  RotationPart parts[kMaxRotations];
+  int count = 0;
+  void add(const RotationPart& r) {
+    if (count < kMaxRotations) parts[count++] = r;
+  }
+};
+
+// An angle constraint with its value snapped to a parallelism when it is 0 or π.
+struct Angle {
+  Vector3d u_m, u_f;
+  double alpha;
+  bool parallel;
+  SourceMask sources;
+};
+
+Angle normalise(const Fundamental& f, const Tolerance& tol) {
+  Angle a{f.p, f.q, f.value(), false, f.sources};
+  if (tol.zeroAngle(a.alpha)) {
+    a.parallel = true;
+    a.alpha = 0;
+  } else if (tol.equalAngle(a.alpha, kPi)) {
+    a.parallel = true;
+    a.alpha = 0;
+    a.u_f = -a.u_f;
+  }
+  return a;
+}
+
+MatchResult inconsistent(MatchContext& ctx, SourceMask m, const char* why) {
+  ctx.conflict = m;
+  ctx.reason = why;
+  return MatchResult::kInconsistent;
+}
+
+// Two parallelisms on independent vectors: one rotation (App. III-A), if the angle between the
+// mobile vectors equals the angle between the fixed ones.
+MatchResult twoParallels(MatchContext& ctx, const Angle& a, const Angle& b,
+                         RotationAlternatives& out) {
+  if (a.u_m.cross(b.u_m).norm() <= ctx.tol.angle) return MatchResult::kNoMatch;
+  if (!ctx.tol.equalAngle(angleBetween(a.u_m, b.u_m), angleBetween(a.u_f, b.u_f)) &&
+      std::abs(angleBetween(a.u_m, b.u_m) - angleBetween(a.u_f, b.u_f)) > 1e-9)
+    return inconsistent(ctx, a.sources | b.sources,
+                        "two parallelisms whose mobile and fixed vectors form different angles");
+  out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)));
+  return MatchResult::kMatched;
+}
+
+// Two angles (App. III-D): R(φ) = R(u_f, φ) R0 R(u_m, θ(φ)), φ restricted to where the second
+// angle can be met: w(φ)·v_f ∈ [cos(σ_m + β), cos(σ_m − β)] with w(φ) = R(u_f, φ) R0 u_m.
+MatchResult twoAngles(MatchContext& ctx, const Angle& a, const Angle& b,
+                      RotationAlternatives& out) {
+  const Tolerance& tol = ctx.tol;
+  const double sigma_m = angleBetween(a.u_m, b.u_m);
+  const Vector3d vf_perp = b.u_f - b.u_f.dot(a.u_f) * a.u_f;
+  if (std::sin(sigma_m) <= tol.angle || vf_perp.norm() <= tol.angle) return MatchResult::kNoMatch;
+  RotationPart base = RotationPart::oneAngle(a.u_m, a.u_f, a.alpha);
+  base.kind = RotationKind::kTwoAngle;
+  base.v_m = b.u_m;
+  base.v_f = b.u_f;
+  base.cos_beta = std::cos(b.alpha);
+  const Vector3d w0 = base.R0 * a.u_m;
+  const Vector3d w0_perp = w0 - w0.dot(a.u_f) * a.u_f;
+  const double h0 = std::cos(a.alpha) * a.u_f.dot(b.u_f);
+  const double amp = w0_perp.norm() * vf_perp.norm();
+  // φ0: the φ at which w(φ) leans furthest toward v_f.
+  const double phi0 = std::atan2(w0_perp.cross(vf_perp).dot(a.u_f), w0_perp.dot(vf_perp));
+  const double lo_h = std::cos(sigma_m + b.alpha), hi_h = std::cos(sigma_m - b.alpha);
+  const double eps = 1e-12;
+  double L = (lo_h - h0) / amp, U = (hi_h - h0) / amp;
+  if (L > 1.0 + eps || U < -1.0 - eps)
+    return inconsistent(ctx, a.sources | b.sources,
+                        "two angle constraints that no rotation satisfies together");
+  const double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
+  const double psi_out = std::acos(clampUnit(L));  // |φ − φ0| <= psi_out
+  struct Interval {
+    double lo, hi;
+    bool periodic;
+  } iv[2];
+  int n_iv = 0;
+  if (psi_in <= tol.angle && psi_out >= kPi - tol.angle) {
+    iv[n_iv++] = {-kPi, kPi, true};
+  } else if (psi_in <= tol.angle) {
+    iv[n_iv++] = {phi0 - psi_out, phi0 + psi_out, false};
+  } else if (psi_out >= kPi - tol.angle) {
+    iv[n_iv++] = {phi0 + psi_in, phi0 + 2 * kPi - psi_in, false};
+  } else {
+    iv[n_iv++] = {phi0 + psi_in, phi0 + psi_out, false};
+    iv[n_iv++] = {phi0 - psi_out, phi0 - psi_in, false};
+  }
+  for (int k = 0; k < n_iv; ++k) {
+    if (iv[k].hi - iv[k].lo <= tol.angle) {
+      // A single φ: both θ signs meet, one discrete rotation.
+      double th[1] = {0.5 * (iv[k].lo + iv[k].hi)};
+      out.add(RotationPart::fixed(base.rotation(th)));
+      continue;
+    }
+    for (double sign : {1.0, -1.0}) {
+      RotationPart r = base;
+      r.sign = sign;
+      r.phi_lo = iv[k].lo;
+      r.phi_hi = iv[k].hi;
+      r.phi_periodic = iv[k].periodic;
+      out.add(r);
+    }
+  }
+  return MatchResult::kMatched;
+}
+
+// Three angles on right trihedra (App. III-C): R = F R2 Mᵀ with R2 = Rx(θ1) Rz(α) Rx(θ2),
+// cos(θ1 + θ2) = (cβ + cγ)/(1 + cα), cos(θ1 − θ2) = (cγ − cβ)/(1 − cα): up to 8 rotations.
+MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c,
+                        RotationAlternatives& out) {
+  const double tol = 1e-9;
+  auto ortho = [&](const Vector3d& x, const Vector3d& y) { return std::abs(x.dot(y)) <= tol; };
+  if (!ortho(a.u_m, b.u_m) || !ortho(a.u_m, c.u_m) || !ortho(b.u_m, c.u_m) ||
+      !ortho(a.u_f, b.u_f) || !ortho(a.u_f, c.u_f) || !ortho(b.u_f, c.u_f))
+    return MatchResult::kNoMatch;
+  // Make both trihedra right-handed by flipping the third vector (angle γ -> π − γ).
+  if (a.u_m.cross(b.u_m).dot(c.u_m) < 0) c.u_m = -c.u_m, c.alpha = kPi - c.alpha;
+  if (a.u_f.cross(b.u_f).dot(c.u_f) < 0) c.u_f = -c.u_f, c.alpha = kPi - c.alpha;
+  // Put a non-degenerate angle first (cyclic order keeps the handedness).
+  Angle ang[3] = {a, b, c};
+  int first = 0;
+  while (first < 3 && std::sin(ang[first].alpha) < 1e-9) ++first;
+  Matrix3d M, F;
+  const SourceMask all = a.sources | b.sources | c.sources;
+  if (first == 3) {
+    // Every angle is 0 or π: R2 is diagonal ±1 and must be a rotation.
+    Vector3d diag(std::cos(a.alpha), std::cos(b.alpha), std::cos(c.alpha));
+    diag = diag.array().round();
+    if (diag.prod() < 0)
+      return inconsistent(ctx, all, "three angle constraints that no rotation satisfies");
+    for (int k = 0; k < 3; ++k) M.col(k) = ang[k].u_m, F.col(k) = ang[k].u_f;
+    out.add(RotationPart::fixed(F * diag.asDiagonal() * M.transpose()));
+    return MatchResult::kMatched;
+  }
+  const Angle& A = ang[first];
+  const Angle& B = ang[(first + 1) % 3];
+  const Angle& C = ang[(first + 2) % 3];
+  M.col(0) = A.u_m, M.col(1) = B.u_m, M.col(2) = C.u_m;
+  F.col(0) = A.u_f, F.col(1) = B.u_f, F.col(2) = C.u_f;
+  const double ca = std::cos(A.alpha), cb = std::cos(B.alpha), cc = std::cos(C.alpha);
+  const double cp = (cb + cc) / (1 + ca), cm = (cc - cb) / (1 - ca);
+  if (std::abs(cp) > 1 + 1e-9 || std::abs(cm) > 1 + 1e-9)
+    return inconsistent(ctx, all, "three angle constraints that no rotation satisfies");
+  const double a1 = std::acos(clampUnit(cp)), a2 = std::acos(clampUnit(cm));
+  for (int k = 0; k < 2; ++k)
+    for (double s1 : {1.0, -1.0})
+      for (double s2 : {1.0, -1.0}) {
+        double psi1 = s1 * a1 + 2 * kPi * k, psi2 = s2 * a2;
+        double t1 = 0.5 * (psi1 + psi2), t2 = 0.5 * (psi1 - psi2);
+        Matrix3d R2 = axisAngle(Vector3d::UnitX(), t1) * axisAngle(Vector3d::UnitZ(), A.alpha) *
+                      axisAngle(Vector3d::UnitX(), t2);
+        Matrix3d R = F * R2 * M.transpose();
+        bool dup = false;
+        for (int j = 0; j < out.count; ++j)
+          dup = dup || rotationDistance(out.parts[j].R0, R) < 1e-9;
+        if (!dup) out.add(RotationPart::fixed(R));
+      }
+  return MatchResult::kMatched;
+}
+
+MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
+  const auto& rs = ctx.set.rotational;
+  Angle ang[kMaxFundamentals];
+  int n = 0, n_par = 0;
+  for (const auto& f : rs) {
+    ang[n] = normalise(f, ctx.tol);
+    n_par += ang[n].parallel;
+    ++n;
+  }
+  if (n == 0) {
+    out.add(RotationPart::free());
+    return MatchResult::kMatched;
+  }
+  if (n == 1) {
+    out.add(ang[0].parallel ? RotationPart::oneParallel(ang[0].u_m, ang[0].u_f)
+                            : RotationPart::oneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha));
+    return MatchResult::kMatched;
+  }
+  if (n == 2 && n_par == 2) return twoParallels(ctx, ang[0], ang[1], out);
+  if (n == 2 && n_par == 0) return twoAngles(ctx, ang[0], ang[1], out);
+  if (n == 3) return threeAngles(ctx, ang[0], ang[1], ang[2], out);
+  return MatchResult::kNoMatch;
+}
+
+// Both directions of two translational constraints turn together with R (or neither turns), so
+// their relative orientation is the same for every rotation.
+bool sameFrame(const Fundamental& a, const Fundamental& b) { return a.point_side == b.point_side; }
+
+bool matchTranslation(const ConstraintSet& set, const Tolerance& tol, TranslationPart& out) {
+  const auto& ts = set.translational;
+  if (ts.size() == 0) {
+    out.kind = TranslationKind::kFree;
+    return true;
+  }
+  if (ts.size() == 1) {
+    const Fundamental& f = ts[0];
+    out.c1 = f;
+    switch (f.kind) {
+      case FundamentalKind::kPointPoint:
+        out.kind = f.value() == 0.0 ? TranslationKind::kPoint : TranslationKind::kSphere;
+        return true;
+      case FundamentalKind::kPointLine:
+        out.kind = f.value() == 0.0 ? TranslationKind::kLine : TranslationKind::kCylinder;
+        return true;
+      case FundamentalKind::kPointPlane: out.kind = TranslationKind::kPlane; return true;
+      case FundamentalKind::kAngle: return false;
+    }
+  }
+  if (ts.size() != 2 || !sameFrame(ts[0], ts[1])) return false;
+  const Fundamental* plane = nullptr;
+  const Fundamental* other = nullptr;
+  for (int k = 0; k < 2; ++k) {
+    if (ts[k].kind == FundamentalKind::kPointPlane && !plane) plane = &ts[k];
+    else other = &ts[k];
+  }
+  if (!plane || !other) return false;
+  out.c2 = *plane;
+  out.c1 = *other;
+  switch (other->kind) {
+    case FundamentalKind::kPointPlane:
+      if (other->d.cross(plane->d).norm() <= tol.angle) return false;
+      out.kind = TranslationKind::kLineOfPlanes;
+      return true;
+    case FundamentalKind::kPointLine:
+      if (std::abs(other->d.dot(plane->d)) <= tol.angle) return false;
+      out.kind = other->value() == 0.0 ? TranslationKind::kPointOfLinePlane
+                                       : TranslationKind::kEllipse;
+      return true;
+    default: return false;
+  }
+}
+
+MatchResult matchSeparable(MatchContext& ctx) {
+  for (const auto& f : ctx.set.translational)
+    if (!f.exact()) return MatchResult::kNoMatch;
+  for (const auto& f : ctx.set.rotational)
+    if (!f.exact()) return MatchResult::kNoMatch;
+  TranslationPart trans;
+  if (!matchTranslation(ctx.set, ctx.tol, trans)) return MatchResult::kNoMatch;
+  RotationAlternatives rots;
+  MatchResult r = matchRotation(ctx, rots);
+  if (r != MatchResult::kMatched) return r;
+  for (int k = 0; k < rots.count; ++k) {
+    if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
+    ctx.out.branches.emplace_back();
+    ctx.out.branches.back().manifold.emplace<SeparableManifold>(rots.parts[k], trans);
+  }
+  return MatchResult::kMatched;
+}
+
+}  // namespace
+
+void registerBuiltinManifolds(Registry& registry) {
+  const char* rot[] = {"Fixed", "OneParallel", "OneAngle", "TwoAngle", "Free"};
+  const char* rot_desc[] = {
+      "0 rotational DOF: two parallelisms or three angles on right trihedra (PMF Table III)",
+      "1 DOF: spin about one fixed direction (PMF eq. 3)",
+      "2 DOF: one vector on a cone about a fixed direction (PMF eq. 4)",
+      "1 DOF over phi intervals: two angle constraints (PMF App. III-D)",
+      "3 DOF: roll, pitch, yaw (PMF eq. 5)"};
+  for (int i = 0; i < 5; ++i)
+    registry.addManifold({std::string("rotation/") + rot[i], rot_desc[i]});
+  const char* tr[][2] = {{"R3", "3 DOF: no translational constraint"},
+                         {"Point", "0 DOF: point-point coincidence, or line meets plane"},
+                         {"Line", "1 DOF: point on a line, or point on two planes"},
+                         {"Plane", "2 DOF: point on a plane"},
+                         {"Sphere", "2 DOF: point-point distance"},
+                         {"Cylinder", "2 DOF: point-line distance"},
+                         {"Ellipse", "1 DOF: point-line distance and point on a plane"}};
+  for (auto& t : tr) registry.addManifold({std::string("translation/") + t[0], t[1]});
+  registry.addMatcher({"separable", &matchSeparable});
+}
+
+}  // namespace relpos::manifolds

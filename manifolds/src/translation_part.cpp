@@ -1,0 +1,189 @@
+#include "relpos/manifolds/translation_part.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace relpos::manifolds {
+
+const char* toString(TranslationKind k) {
+  switch (k) {
+    case TranslationKind::kFree: return "R3";
+    case TranslationKind::kPoint: return "Point";
+    case TranslationKind::kLine: return "Line";
+    case TranslationKind::kPlane: return "Plane";
+    case TranslationKind::kSphere: return "Sphere";
+    case TranslationKind::kCylinder: return "Cylinder";
+    case TranslationKind::kLineOfPlanes: return "Line";
+    case TranslationKind::kPointOfLinePlane: return "Point";
+    case TranslationKind::kEllipse: return "Ellipse";
+  }
+  return "?";
+}
+
+TShape shapeOf(const Fundamental& f, const Matrix3d& R) {
+  // Mobile point p, fixed element (q, d):  R p + T ∈ X      =>  T ∈ X − R p.
+  // Fixed point p, mobile element (q, d):  p ∈ R X + T      =>  T ∈ p − R X (direction R d).
+  TShape s;
+  const bool point_mobile = f.point_side == Side::kMobile;
+  const Vector3d c = point_mobile ? Vector3d(f.q - R * f.p) : Vector3d(f.p - R * f.q);
+  s.c = c;
+  s.d = point_mobile ? f.d : Vector3d(R * f.d);
+  s.e1 = point_mobile ? anyPerpendicular(f.d) : Vector3d(R * anyPerpendicular(f.d));
+  s.r = f.value();
+  switch (f.kind) {
+    case FundamentalKind::kPointPoint:
+      s.kind = s.r == 0.0 ? TShape::kPoint : TShape::kSphere;
+      break;
+    case FundamentalKind::kPointLine:
+      s.kind = s.r == 0.0 ? TShape::kLine : TShape::kCylinder;
+      break;
+    case FundamentalKind::kPointPlane:
+      s.kind = TShape::kPlane;
+      break;
+    case FundamentalKind::kAngle:
+      break;
+  }
+  return s;
+}
+
+int TranslationPart::dof() const {
+  switch (kind) {
+    case TranslationKind::kFree: return 3;
+    case TranslationKind::kPoint: return 0;
+    case TranslationKind::kLine: return 1;
+    case TranslationKind::kPlane: return 2;
+    case TranslationKind::kSphere: return 2;
+    case TranslationKind::kCylinder: return 2;
+    case TranslationKind::kLineOfPlanes: return 1;
+    case TranslationKind::kPointOfLinePlane: return 0;
+    case TranslationKind::kEllipse: return 1;
+  }
+  return 0;
+}
+
+Parameter TranslationPart::parameter(int i) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Parameter len{"lambda", ParamKind::kLength, -inf, inf, false};
+  Parameter ang{"alpha", ParamKind::kAngle, -kPi, kPi, true};
+  switch (kind) {
+    case TranslationKind::kFree: len.name = i == 0 ? "x" : (i == 1 ? "y" : "z"); return len;
+    case TranslationKind::kLine:
+    case TranslationKind::kLineOfPlanes: return len;
+    case TranslationKind::kPlane: len.name = i == 0 ? "lambda1" : "lambda2"; return len;
+    case TranslationKind::kSphere:
+      if (i == 1) return Parameter{"beta", ParamKind::kAngle, 0.0, kPi, false};
+      return ang;
+    case TranslationKind::kCylinder: return i == 0 ? len : ang;
+    case TranslationKind::kEllipse: return ang;
+    case TranslationKind::kPoint:
+    case TranslationKind::kPointOfLinePlane: break;
+  }
+  return len;
+}
+
+namespace {
+
+// Intersection line of two non-parallel planes (point closest to the first plane's point).
+void planePlane(const TShape& a, const TShape& b, Vector3d* point, Vector3d* dir) {
+  Vector3d d = a.d.cross(b.d).normalized();
+  // Solve for x on both planes, in the span of the normals, offset from a.c.
+  double h1 = 0.0, h2 = (b.c - a.c).dot(b.d);
+  double n12 = a.d.dot(b.d);
+  double det = 1.0 - n12 * n12;
+  double c1 = (h1 - h2 * n12) / det, c2 = (h2 - h1 * n12) / det;
+  *point = a.c + c1 * a.d + c2 * b.d;
+  *dir = d;
+}
+
+Vector3d linePlane(const Vector3d& c, const Vector3d& d, const TShape& plane) {
+  return c + ((plane.c - c).dot(plane.d) / d.dot(plane.d)) * d;
+}
+
+// The two in-plane axes of the ellipse cut by a cylinder (axis d, radius r) from a plane
+// (normal n): e1 ⊥ d and n, e2 = n × e1, semi-axes r and r / |d·n| (PMF eq. 10).
+void ellipseAxes(const TShape& cyl, const TShape& plane, Vector3d* e1, Vector3d* e2,
+                 double* b) {
+  Vector3d w = plane.d.cross(cyl.d);
+  *e1 = w.norm() > 1e-12 ? Vector3d(w.normalized()) : cyl.e1;
+  *e2 = plane.d.cross(*e1);
+  *b = cyl.r / std::abs(cyl.d.dot(plane.d));
+}
+
+}  // namespace
+
+Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const {
+  if (kind == TranslationKind::kFree) return Vector3d(t[0], t[1], t[2]);
+  const TShape s = shapeOf(c1, R);
+  const Vector3d e2 = s.d.cross(s.e1);
+  switch (kind) {
+    case TranslationKind::kPoint: return s.c;
+    case TranslationKind::kLine: return s.c + t[0] * s.d;
+    case TranslationKind::kPlane: return s.c + t[0] * s.e1 + t[1] * e2;
+    case TranslationKind::kSphere:
+      return s.c + s.r * Vector3d(std::cos(t[0]) * std::sin(t[1]),
+                                  std::sin(t[0]) * std::sin(t[1]), std::cos(t[1]));
+    case TranslationKind::kCylinder:
+      return s.c + t[0] * s.d + s.r * (std::cos(t[1]) * s.e1 + std::sin(t[1]) * e2);
+    case TranslationKind::kLineOfPlanes: {
+      Vector3d p, d;
+      planePlane(s, shapeOf(c2, R), &p, &d);
+      return p + t[0] * d;
+    }
+    case TranslationKind::kPointOfLinePlane: return linePlane(s.c, s.d, shapeOf(c2, R));
+    case TranslationKind::kEllipse: {
+      const TShape pl = shapeOf(c2, R);
+      Vector3d a1, a2;
+      double b;
+      ellipseAxes(s, pl, &a1, &a2, &b);
+      return linePlane(s.c, s.d, pl) + s.r * std::cos(t[0]) * a1 + b * std::sin(t[0]) * a2;
+    }
+    case TranslationKind::kFree: break;
+  }
+  return Vector3d::Zero();
+}
+
+void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) const {
+  if (kind == TranslationKind::kFree) {
+    t[0] = T.x(), t[1] = T.y(), t[2] = T.z();
+    return;
+  }
+  const TShape s = shapeOf(c1, R);
+  const Vector3d e2 = s.d.cross(s.e1);
+  const Vector3d v = T - s.c;
+  switch (kind) {
+    case TranslationKind::kLine: t[0] = v.dot(s.d); return;
+    case TranslationKind::kPlane: t[0] = v.dot(s.e1), t[1] = v.dot(e2); return;
+    case TranslationKind::kSphere:
+      if (v.norm() < 1e-300) {
+        t[0] = t[1] = 0.0;
+      } else {
+        t[0] = std::atan2(v.y(), v.x());
+        t[1] = std::acos(clampUnit(v.z() / v.norm()));
+      }
+      return;
+    case TranslationKind::kCylinder:
+      t[0] = v.dot(s.d);
+      t[1] = std::atan2(v.dot(e2), v.dot(s.e1));
+      return;
+    case TranslationKind::kLineOfPlanes: {
+      Vector3d p, d;
+      planePlane(s, shapeOf(c2, R), &p, &d);
+      t[0] = (T - p).dot(d);
+      return;
+    }
+    case TranslationKind::kEllipse: {
+      const TShape pl = shapeOf(c2, R);
+      Vector3d a1, a2;
+      double b;
+      ellipseAxes(s, pl, &a1, &a2, &b);
+      Vector3d w = T - linePlane(s.c, s.d, pl);
+      t[0] = std::atan2(w.dot(a2) / b, w.dot(a1) / s.r);
+      return;
+    }
+    case TranslationKind::kPoint:
+    case TranslationKind::kPointOfLinePlane:
+    case TranslationKind::kFree: return;
+  }
+}
+
+}  // namespace relpos::manifolds

@@ -1,0 +1,20 @@
+#pragma once
+#include "relpos/core/registry.hpp"
+
+namespace relpos::rules {
+// Constraint types of SPEC.md §1 with their decomposition (PMF Table I).
+void registerBuiltinConstraintTypes(Registry& registry);
+// Combination rules, one function per PMF Appendix IV family.
+void registerPointPointRules(Registry& registry);   // App. IV Table I
+void registerPointLineRules(Registry& registry);    // App. IV Table III (same mobile point)
+void registerPointPlaneRules(Registry& registry);   // App. IV Table VII
+void registerPinnedPointRules(Registry& registry);  // App. IV rows with p = 0, generalised
+void registerAngleRules(Registry& registry);        // App. IV Table X
+// Everything above.
+void registerBuiltinRules(Registry& registry);
+}  // namespace relpos::rules
+
+namespace relpos {
+// Registers every built-in constraint type, rule and manifold, then returns. Does not freeze.
+void registerBuiltins(Registry& registry);
+}  // namespace relpos

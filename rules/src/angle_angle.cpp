@@ -1,0 +1,117 @@
+// PMF App. IV Table X: two angle constraints ∠(u_m, u_f) = α, ∠(v_m, v_f) = β, with
+// σ_m = ∠(u_m, v_m) and σ_f = ∠(u_f, v_f). The rows handled here are those that reduce the pair
+// to parallelisms (via the vectors s± of App. II) or prove it redundant or incompatible; the
+// general pair is left to the two-angle rotation of App. III-D.
+#include <cmath>
+
+#include "relpos/rules/builtin.hpp"
+#include "rule_helpers.hpp"
+
+namespace relpos::rules {
+namespace {
+using namespace detail;
+
+// App. II: unit vectors at angle a from u and b from v (u, v independent unit vectors).
+// Returns how many (0, 1 or 2).
+int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const Tolerance& tol,
+               Vector3d s[2]) {
+  const double cs = u.dot(v);
+  const Vector3d vu = (v - cs * u).normalized();
+  const Vector3d w = u.cross(vu);
+  const double ss = std::sqrt(std::max(0.0, 1 - cs * cs));
+  const double cphi = (std::cos(b) - std::cos(a) * cs) / ss;
+  const double ct2 = std::sin(a) * std::sin(a) - cphi * cphi;
+  if (ct2 < -4 * tol.angle) return 0;
+  const Vector3d base = std::cos(a) * u + cphi * vu;
+  if (ct2 <= 4 * tol.angle * tol.angle + 1e-14) {
+    s[0] = base.normalized();
+    return 1;
+  }
+  const double ct = std::sqrt(ct2);
+  s[0] = (base + ct * w).normalized();
+  s[1] = (base - ct * w).normalized();
+  return 2;
+}
+
+struct Ang {
+  Vector3d m, f;
+  double a;
+  SourceMask src;
+};
+
+// Snap angles at 0 or π to a parallelism with the fixed vector flipped.
+Ang snap(const Fundamental& x, const Tolerance& tol) {
+  Ang r{x.p, x.q, x.value(), x.sources};
+  if (tol.equalAngle(r.a, kPi)) r.f = -r.f, r.a = 0;
+  if (tol.zeroAngle(r.a)) r.a = 0;
+  return r;
+}
+
+void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& tol,
+               RuleOutput& out) {
+  Ang a = snap(fa, tol), b = snap(fb, tol);
+  // Same mobile vector (σ_m = 0 or π): one vector at α from u_f and β from v_f.
+  double sm = angleBetween(a.m, b.m);
+  if (sm >= kPi - tol.angle) b.m = -b.m, b.a = kPi - b.a, sm = 0;
+  if (sm <= tol.angle) {
+    double sf = angleBetween(a.f, b.f);
+    if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = 0;
+    if (sf <= tol.angle) {
+      if (tol.equalAngle(a.a, b.a)) {
+        out.verdict = RuleVerdict::kRedundantSecond;
+        return;
+      }
+      return out.incompatible("one direction at two different angles from the same direction "
+                              "(PMF App. IV Table X)");
+    }
+    Vector3d s[2];
+    const int n = sPlusMinus(a.f, b.f, a.a, b.a, tol, s);
+    if (n == 0)
+      return out.incompatible("no direction makes both angles (PMF App. IV Table X, row 1)");
+    for (int k = 0; k < n; ++k) one(out, Fundamental::angle(a.m, s[k], 0.0, 0));
+    return;
+  }
+  const bool pa = a.a == 0, pb = b.a == 0;
+  if (pa && pb) {
+    // Two parallelisms: the mobile and fixed vectors must form the same angle (rigid rotation).
+    if (!tol.equalAngle(sm, angleBetween(a.f, b.f)))
+      return out.incompatible("two parallelisms whose mobile vectors and fixed vectors form "
+                              "different angles (PMF App. IV Table X, row 1)");
+    return;  // Table III row 1 solves it
+  }
+  if (!pa && !pb) return;  // App. III-D two-angle rotation
+  // One parallelism (u_m ∥ u_f) and one angle β on v: R v_m lies at σ_m from u_f and β from v_f
+  // (Table X, row with β = 0): v_m ∥ s±(u_f, v_f, σ_m, β).
+  const Ang& par = pa ? a : b;
+  const Ang& ang = pa ? b : a;
+  const double sf = angleBetween(par.f, ang.f);
+  if (sf <= tol.angle || sf >= kPi - tol.angle) {
+    // v_f ∥ ±u_f: the angle is fixed by the parallelism alone.
+    const double implied = sf <= tol.angle ? sm : kPi - sm;
+    if (tol.equalAngle(implied, ang.a)) {
+      out.verdict = pa ? RuleVerdict::kRedundantSecond : RuleVerdict::kRedundantFirst;
+      return;
+    }
+    return out.incompatible("a parallelism fixes the angle of the other constraint to another "
+                            "value (PMF App. IV Table X)");
+  }
+  Vector3d s[2];
+  const int n = sPlusMinus(par.f, ang.f, sm, ang.a, tol, s);
+  if (n == 0)
+    return out.incompatible("a parallelism and an angle that no rotation satisfies together "
+                            "(PMF App. IV Table X, row 1)");
+  for (int k = 0; k < n; ++k) {
+    Alt& alt = out.addAlternative();
+    alt.push_back(Fundamental::angle(par.m, par.f, 0.0, 0));
+    alt.push_back(Fundamental::angle(ang.m, s[k], 0.0, 0));
+  }
+}
+
+}  // namespace
+
+void registerAngleRules(Registry& r) {
+  r.addRule({"angle+angle/table-x", "PMF App. IV Table X (rows reducing to parallelisms)",
+             FundamentalKind::kAngle, FundamentalKind::kAngle, &twoAngles});
+}
+
+}  // namespace relpos::rules

@@ -1,0 +1,117 @@
+// A pinned mobile point d(P_m, P_f) = 0 with one more translational constraint. With P pinned,
+// T = P_f − R P_m, so any constraint on another point Q becomes a condition on the rotation of
+// u = Q_m − P_m alone: an angle (or two). These generalise the p = 0 rows of PMF App. IV
+// Tables I, II, V, VI, VIII and IX (derived from the geometry; the tables list special cases).
+#include <cmath>
+
+#include "relpos/rules/builtin.hpp"
+#include "rule_helpers.hpp"
+
+namespace relpos::rules {
+namespace {
+using namespace detail;
+
+bool pinned(const Fundamental& f, const Tolerance& tol) {
+  return f.kind == FundamentalKind::kPointPoint && tol.zeroLength(f.value());
+}
+
+void redundantOrIncompatible(bool holds, RuleOutput& out, const char* why) {
+  if (holds) out.verdict = RuleVerdict::kRedundantSecond;
+  else out.incompatible(why);
+}
+
+// Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(cos)} after range checks.
+void pinAngle(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
+              double den, const Tolerance& tol, RuleOutput& out) {
+  double alpha;
+  if (!acosChecked(num, den, tol.length, &alpha))
+    return out.incompatible("with one point pinned, the other constraint is out of reach");
+  two(out, pin, Fundamental::angle(u_m, w_f, alpha, 0));
+}
+
+// Two cones: the angle between a mobile vector and a fixed one is asin(s) or π − asin(s).
+void pinSinCone(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
+                double den, const Tolerance& tol, RuleOutput& out) {
+  if (num > den + tol.length)
+    return out.incompatible("with one point pinned, the other constraint is out of reach");
+  const double a = std::asin(std::min(1.0, num / den));
+  if (std::abs(a - kPi / 2) <= tol.angle) return two(out, pin, Fundamental::angle(u_m, w_f, kPi / 2, 0));
+  two(out, pin, Fundamental::angle(u_m, w_f, a, 0));
+  two(out, pin, Fundamental::angle(u_m, w_f, kPi - a, 0));
+}
+
+const char* kSamePoint = "a pinned point that violates another constraint on the same point";
+
+void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                          RuleOutput& out) {
+  // Both pinned, or neither: Table I decides.
+  if (pinned(a, tol) == pinned(b, tol)) return;
+  const bool a_pin = pinned(a, tol);
+  const Fundamental& pin = a_pin ? a : b;
+  const Fundamental& o = a_pin ? b : a;
+  const Vector3d u = o.p - pin.p, w = o.q - pin.q;
+  const double nu = u.norm(), nw = w.norm(), q = o.value();
+  // |R u − w| = q  <=>  R u · w = (|u|² + |w|² − q²) / 2.
+  if (nu <= tol.length || nw <= tol.length) {
+    redundantOrIncompatible(tol.equalLength(std::max(nu, nw), q), out, kSamePoint);
+    if (out.verdict == RuleVerdict::kRedundantSecond && !a_pin)
+      out.verdict = RuleVerdict::kRedundantFirst;
+    return;
+  }
+  pinAngle(pin, u / nu, w / nw, 0.5 * (nu * nu + nw * nw - q * q), nu * nw, tol, out);
+}
+
+void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,
+                         RuleOutput& out) {
+  if (!pinned(pin, tol)) return;
+  const double q = b.value();
+  if (b.point_side == Side::kMobile) {
+    // |(P_f + R u − c) × d| = q with u = Q_m − P_m and the fixed line (c, d).
+    const Vector3d u = b.p - pin.p;
+    const Vector3d e = (pin.q - b.q) - (pin.q - b.q).dot(b.d) * b.d;
+    const double nu = u.norm();
+    if (nu <= tol.length)
+      return redundantOrIncompatible(tol.equalLength(e.norm(), q), out, kSamePoint);
+    if (e.norm() > tol.length) return;  // the pin is off the line: no single-angle rule
+    return pinSinCone(pin, u / nu, b.d, q, nu, tol, out);
+  }
+  // Fixed point Q_f at distance q from the mobile line (c_m, d_m): |(Rᵀw − (c_m − P_m)) × d_m| = q.
+  const Vector3d w = b.p - pin.q;
+  const Vector3d e = (b.q - pin.p) - (b.q - pin.p).dot(b.d) * b.d;
+  const double nw = w.norm();
+  if (nw <= tol.length)
+    return redundantOrIncompatible(tol.equalLength(e.norm(), q), out, kSamePoint);
+  if (e.norm() > tol.length) return;
+  pinSinCone(pin, b.d, w / nw, q, nw, tol, out);
+}
+
+void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,
+                          RuleOutput& out) {
+  if (!pinned(pin, tol)) return;
+  if (b.point_side == Side::kMobile) {
+    // (P_f + R u − c)·n = 0  <=>  R u · n = (c − P_f)·n.
+    const Vector3d u = b.p - pin.p;
+    const double h = (b.q - pin.q).dot(b.d), nu = u.norm();
+    if (nu <= tol.length) return redundantOrIncompatible(tol.zeroLength(h), out, kSamePoint);
+    return pinAngle(pin, u / nu, b.d, h, nu, tol, out);
+  }
+  // Fixed Q_f on the mobile plane (c_m, n_m): (Q_f − P_f)·R n_m = (c_m − P_m)·n_m.
+  const Vector3d w = b.p - pin.q;
+  const double h = (b.q - pin.p).dot(b.d), nw = w.norm();
+  if (nw <= tol.length) return redundantOrIncompatible(tol.zeroLength(h), out, kSamePoint);
+  pinAngle(pin, b.d, w / nw, h, nw, tol, out);
+}
+
+}  // namespace
+
+void registerPinnedPointRules(Registry& r) {
+  using FK = FundamentalKind;
+  r.addRule({"pp0+pp/pinned-angle", "PMF App. IV Table I, rows with q = 0 (generalised)",
+             FK::kPointPoint, FK::kPointPoint, &pinnedWithPointPoint});
+  r.addRule({"pp0+pl/pinned-angle", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
+             FK::kPointPoint, FK::kPointLine, &pinnedWithPointLine});
+  r.addRule({"pp0+pplane/pinned-angle", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
+             FK::kPointPoint, FK::kPointPlane, &pinnedWithPointPlane});
+}
+
+}  // namespace relpos::rules

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages relpos builds with. Does nothing when they are all present, so the
+# README commands can call it every time.
+set -euo pipefail
+pkgs=(cmake g++ make ccache libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
+      libbenchmark-dev libboost-dev)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+echo "installing: ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
