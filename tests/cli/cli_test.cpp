@@ -1,0 +1,149 @@
+// The relpos command and the API example, run as a user runs them.
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_config.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CmdResult {
+  int code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+fs::path scratchDir() {
+  fs::path d = fs::temp_directory_path() /
+               ("relpos_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::create_directories(d);
+  return d;
+}
+
+CmdResult run(const std::string& args) {
+  fs::path d = scratchDir();
+  std::string cmd = std::string(RELPOS_EXE) + " " + args + " >" + (d / "out").string() + " 2>" +
+                    (d / "err").string();
+  int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(d / "out"), slurp(d / "err")};
+}
+
+fs::path writeSpec(const std::string& name, const std::string& text) {
+  fs::path p = scratchDir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
+
+TEST(Cli, SolveWorkedExample) {
+  CmdResult r = run("solve " + kExample + " --samples 3 --seed 5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "solved");
+  EXPECT_EQ(j["name"], "pmf-simple-example");
+  ASSERT_EQ(j["branches"].size(), 1u);
+  const auto& b = j["branches"][0];
+  EXPECT_EQ(b["dof"], 1);
+  EXPECT_EQ(b["rotational_dof"], 1);
+  EXPECT_EQ(b["translational_dof"], 0);
+  EXPECT_EQ(b["samples"].size(), 3u);
+  // Nearest to the identity: φ = 0, |T| = 5 and a quarter turn (derived by hand: along the
+  // branch |T|² = 25 + 18(1 − cos φ) and the rotation angle is acos((cos φ − 1)/2)).
+  EXPECT_NEAR(b["nearest"]["distance"].get<double>(), 5 + M_PI / 2, 1e-9);
+  EXPECT_EQ(j["best"], 0);
+  EXPECT_TRUE(j["stats"]["solve_us"].is_number());
+}
+
+TEST(Cli, SameSeedSameSamples) {
+  CmdResult a = run("solve " + kExample + " --samples 4 --seed 9");
+  CmdResult b = run("solve " + kExample + " --samples 4 --seed 9");
+  auto strip = [](std::string s) {
+    nlohmann::json j = nlohmann::json::parse(s);
+    j.erase("stats");
+    return j.dump();
+  };
+  EXPECT_EQ(strip(a.out), strip(b.out));
+}
+
+TEST(Cli, OutputFileAndNoPartialFileOnBadInput) {
+  fs::path out = scratchDir() / "result.json";
+  fs::remove(out);
+  CmdResult ok = run("solve " + kExample + " -o " + out.string());
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(out))["status"], "solved");
+  fs::remove(out);
+  fs::path bad = writeSpec("bad.json", R"({"relpos": 1, "fixed": {"features": {}},
+      "mobile": {"name": "gripper", "features": {"tcp": {"point": [0, 0, 0]}}},
+      "constraints": [{"type": "coincident", "fixed": "tcp", "mobile": "tcp2"}]})");
+  CmdResult r = run("solve " + bad.string() + " -o " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_NE(r.err.find(bad.string() + ": constraints[0].mobile: no feature 'tcp2' on mobile "
+                                      "object 'gripper' (it has: tcp)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("constraints[0].fixed: no feature 'tcp' on fixed object"), std::string::npos)
+      << r.err;
+}
+
+TEST(Cli, MalformedJsonAndMissingFile) {
+  fs::path bad = writeSpec("broken.json", "{\n \"relpos\": 1,\n \"fixed\": [}\n");
+  CmdResult r = run("solve " + bad.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("broken.json: malformed JSON at line 3"), std::string::npos) << r.err;
+  CmdResult m = run("solve /nonexistent/spec.json");
+  EXPECT_EQ(m.code, 2);
+  EXPECT_NE(m.err.find("/nonexistent/spec.json: cannot read the file"), std::string::npos) << m.err;
+}
+
+TEST(Cli, UsageErrors) {
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("frobnicate").code, 2);
+  EXPECT_EQ(run("solve " + kExample + " --samples -3").code, 2);
+  EXPECT_EQ(run("solve " + kExample + " --bogus").code, 2);
+  EXPECT_EQ(run("solve").code, 2);
+}
+
+TEST(Cli, RulesListsTypesRulesAndManifolds) {
+  CmdResult r = run("rules");
+  ASSERT_EQ(r.code, 0);
+  for (const char* s : {"distance", "tangent", "pp+pp/two-distances", "PMF App. IV Table VII",
+                        "rotation/TwoAngle", "translation/Ellipse", "built-in"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s;
+}
+
+TEST(Cli, TableOfExamples) {
+  CmdResult r = run("table " RELPOS_DATA_DIR "/examples --repeat 3");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("pmf-simple-example"), std::string::npos);
+  EXPECT_NE(r.out.find(" 0 invalid"), std::string::npos);
+}
+
+TEST(Cli, ApiExampleRuns) {
+  fs::path d = scratchDir();
+  int status = std::system((std::string(RELPOS_API_EXAMPLE) + " >" + (d / "out").string()).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  std::string out = slurp(d / "out");
+  EXPECT_NE(out.find("rotation OneParallel, translation Point, 1 DOF"), std::string::npos) << out;
+  EXPECT_NE(out.find("pose(phi=0): translation [5, "), std::string::npos) << out;
+}
+
+}  // namespace

@@ -1,0 +1,47 @@
+#include <gtest/gtest.h>
+
+#include "relpos/rules/builtin.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+void noRule(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&) {}
+
+TEST(Registry, DuplicateNamesAreRejectedUnlessReplacing) {
+  Registry r;
+  registerBuiltins(r);
+  EXPECT_THROW(registerBuiltins(r), std::invalid_argument);
+  RuleInfo rule{"pp+pp/two-distances", "test", FundamentalKind::kPointPoint,
+                FundamentalKind::kPointPoint, &noRule, "test"};
+  EXPECT_THROW(r.addRule(rule), std::invalid_argument);
+  EXPECT_NO_THROW(r.addRule(rule, /*replace=*/true));
+  EXPECT_EQ(r.rules().size(), builtinRegistry().rules().size());
+}
+
+TEST(Registry, FrozenRegistryRefusesAdditions) {
+  Registry r;
+  r.freeze();
+  EXPECT_THROW(r.addMatcher({"m", nullptr}), std::logic_error);
+}
+
+TEST(Registry, DispatchTableHasBothOrders) {
+  const Registry& r = builtinRegistry();
+  const auto& pp_pl = r.rulesFor(FundamentalKind::kPointPoint, FundamentalKind::kPointLine);
+  const auto& pl_pp = r.rulesFor(FundamentalKind::kPointLine, FundamentalKind::kPointPoint);
+  ASSERT_EQ(pp_pl.size(), pl_pp.size());
+  ASSERT_FALSE(pp_pl.empty());
+  EXPECT_FALSE(pp_pl[0].swapped);
+  EXPECT_TRUE(pl_pp[0].swapped);
+  EXPECT_EQ(pp_pl[0].rule, pl_pp[0].rule);
+}
+
+TEST(Registry, EveryRuleHasANameAndACitation) {
+  for (const auto& rule : builtinRegistry().rules()) {
+    EXPECT_FALSE(rule.name.empty());
+    EXPECT_NE(rule.citation.find("PMF"), std::string::npos) << rule.name;
+  }
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,194 @@
+// Spec parsing: every form of SPEC.md §1 parses to the right values, and every kind of bad input
+// gives an error naming the JSON path and the problem.
+#include <gtest/gtest.h>
+
+#include "relpos/core/spec_io.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+const char* kBase = R"({
+  "relpos": 1,
+  "fixed": {"features": {
+    "K": {"line": {"point": [0, 0, 3], "direction": [0, 2, 0]}},
+    "Pl": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 5]}},
+    "C": {"cylinder": {"point": [1, 0, 0], "direction": [0, 0, 1], "radius": 0.5}},
+    "Q": {"point": [-2, 0, 3]}}},
+  "mobile": {"name": "gripper", "features": {
+    "tcp": {"point": [0, 5, 3]}, "palm": {"plane": {"point": [0, 0, 0], "normal": [1, 0, 0]}},
+    "ax": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}}}},
+  "constraints": [ CONSTRAINTS ]
+})";
+
+std::string spec(const std::string& constraints, const char* base = kBase) {
+  std::string s = base;
+  s.replace(s.find("CONSTRAINTS"), 11, constraints);
+  return s;
+}
+
+ParseResult parse(const std::string& text) { return parseSpec(text, builtinRegistry(), "t"); }
+
+// Exactly one error, at `path`, whose message contains `needle`.
+void expectError(const std::string& text, const std::string& path, const std::string& needle) {
+  ParseResult r = parse(text);
+  EXPECT_FALSE(r.problem.has_value());
+  ASSERT_FALSE(r.errors.empty()) << "no error for " << text;
+  bool found = false;
+  std::string all;
+  for (const auto& e : r.errors) {
+    all += e.path + ": " + e.message + "\n";
+    found = found || (e.path == path && e.message.find(needle) != std::string::npos);
+  }
+  EXPECT_TRUE(found) << "wanted '" << path << ": ..." << needle << "...', got:\n" << all;
+}
+
+TEST(SpecParse, ValidSpecParses) {
+  ParseResult r = parse(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})"));
+  ASSERT_TRUE(r.problem) << r.errors.front().message;
+  EXPECT_EQ(r.problem->name, "t");
+  EXPECT_EQ(r.problem->mobile.name, "gripper");
+  ASSERT_EQ(r.problem->constraints.size(), 1u);
+  // Directions are normalised.
+  EXPECT_NEAR(r.problem->constraints[0].fixed.direction.norm(), 1.0, 1e-15);
+}
+
+TEST(SpecParse, CylinderAxisIsALine) {
+  ParseResult r = parse(spec(R"({"type": "coincident", "fixed": "C.axis", "mobile": "ax"})"));
+  ASSERT_TRUE(r.problem);
+  EXPECT_EQ(r.problem->constraints[0].fixed.kind, FeatureKind::kLine);
+  EXPECT_TRUE(r.problem->constraints[0].fixed.point.isApprox(Vector3d(1, 0, 0)));
+}
+
+TEST(SpecParse, DegreesApplyToAnglesAndRpy) {
+  std::string s = spec(R"({"type": "angle", "fixed": "K", "mobile": "ax", "value": 90})");
+  s.insert(s.find("\"fixed\""), R"("units": {"angle": "deg"}, )");
+  s.insert(s.find("\"features\": {\n    \"tcp\""), R"("pose": {"rpy": [0, 0, 90]}, )");
+  ParseResult r = parse(s);
+  ASSERT_TRUE(r.problem) << r.errors.front().path << r.errors.front().message;
+  EXPECT_NEAR(r.problem->constraints[0].value, 1.5707963267948966, 1e-15);
+  Vector3d x = r.problem->mobile.pose.linear() * Vector3d::UnitX();
+  EXPECT_TRUE(x.isApprox(Vector3d::UnitY(), 1e-12)) << x.transpose();
+}
+
+TEST(SpecParse, PoseForms) {
+  auto withPose = [](const std::string& pose) {
+    std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
+    s.insert(s.find("\"features\": {\n    \"K\""), "\"pose\": " + pose + ", ");
+    return s;
+  };
+  ParseResult q = parse(withPose(R"({"position": [1, 2, 3], "orientation": [0, 0, 2, 2]})"));
+  ASSERT_TRUE(q.problem);
+  EXPECT_TRUE((q.problem->fixed.pose.linear() * Vector3d::UnitX()).isApprox(Vector3d::UnitY()));
+  EXPECT_TRUE(q.problem->fixed.pose.translation().isApprox(Vector3d(1, 2, 3)));
+  ParseResult m = parse(withPose(
+      R"({"matrix": [[0, -1, 0, 5], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"));
+  ASSERT_TRUE(m.problem);
+  EXPECT_TRUE(m.problem->fixed.pose.isApprox(q.problem->fixed.pose.linear() *
+                                              Isometry3d(Eigen::Translation3d(0, -5, 0))) ||
+              m.problem->fixed.pose.translation().isApprox(Vector3d(5, 0, 0)));
+  expectError(withPose(R"({"orientation": [0, 0, 0, 0]})"), "fixed.pose.orientation",
+              "zero quaternion");
+  expectError(withPose(R"({"matrix": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"),
+              "fixed.pose.matrix", "not a rigid transform");
+  expectError(withPose(R"({"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]})"),
+              "fixed.pose.matrix", "not a rigid transform");
+  expectError(withPose(R"({"position": [1, "a", 3]})"), "fixed.pose.position[1]",
+              "expected a number");
+}
+
+TEST(SpecParse, MalformedJsonNamesLineAndColumn) {
+  ParseResult r = parse("{\n  \"relpos\": 1,\n  \"fixed\": {,\n}");
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].message.find("malformed JSON at line 3, column"), std::string::npos)
+      << r.errors[0].message;
+}
+
+TEST(SpecParse, MissingSections) {
+  expectError(R"({"relpos": 1, "mobile": {"features": {}}, "constraints": []})", "fixed",
+              "missing");
+  expectError(R"({"relpos": 1, "fixed": {"features": {}}, "constraints": []})", "mobile",
+              "missing");
+  expectError(R"({"relpos": 1, "fixed": {"features": {}}, "mobile": {"features": {}}})",
+              "constraints", "missing");
+}
+
+TEST(SpecParse, UnknownFeatureOrConstraintType) {
+  expectError(spec(R"({"type": "welded", "fixed": "K", "mobile": "tcp"})"), "constraints[0].type",
+              "unknown constraint type 'welded'");
+  expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp2"})"),
+              "constraints[0].mobile",
+              "no feature 'tcp2' on mobile object 'gripper' (it has: tcp, palm, ax)");
+  std::string s = kBase;
+  s.replace(s.find("\"Q\": {\"point\""), 9, "\"Q\": {\"pint\"");
+  expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", s.c_str()),
+              "fixed.features.Q.pint", "unknown feature kind 'pint'");
+}
+
+TEST(SpecParse, FeatureKindTheTypeDoesNotAccept) {
+  expectError(spec(R"({"type": "angle", "fixed": "Q", "mobile": "ax", "value": 1})"),
+              "constraints[0]", "does not accept point-line");
+  expectError(spec(R"({"type": "coincident", "fixed": "K.axis", "mobile": "tcp"})"),
+              "constraints[0].fixed", "only a cylinder has an axis");
+}
+
+TEST(SpecParse, ZeroDirectionNanAndRadius) {
+  std::string s = kBase;
+  s.replace(s.find("[0, 2, 0]"), 9, "[0, 0, 0]");
+  expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", s.c_str()),
+              "fixed.features.K.line.direction", "zero-length direction");
+  std::string r = kBase;
+  r.replace(r.find("\"radius\": 0.5"), 13, "\"radius\": -1");
+  expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", r.c_str()),
+              "fixed.features.C.cylinder.radius", "positive");
+  // JSON has no NaN literal; a huge number overflows to infinity.
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": 1e999})"),
+              "constraints[0].value", "not a finite number");
+}
+
+TEST(SpecParse, ValueProblems) {
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "min": 2, "max": 1})"),
+              "constraints[0]", "min 2 is greater than max 1");
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": -1})"),
+              "constraints[0].value", "negative value");
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp"})"),
+              "constraints[0].value", "missing");
+  expectError(spec(R"({"type": "angle", "fixed": "K", "mobile": "ax", "value": 4})"),
+              "constraints[0].value", "outside [0, pi]");
+  expectError(spec(R"({"type": "angle", "fixed": "Pl", "mobile": "ax", "value": 2})"),
+              "constraints[0].value", "outside [-pi/2, pi/2]");
+  expectError(spec(R"({"type": "parallel", "fixed": "K", "mobile": "ax", "orientation": "up"})"),
+              "constraints[0].orientation", "expected");
+  // Signed distances may be negative.
+  EXPECT_TRUE(parse(spec(R"({"type": "distance", "fixed": "Pl", "mobile": "tcp", "value": -1})"))
+                  .problem);
+}
+
+TEST(SpecParse, RangesAndSkewParse) {
+  ParseResult r = parse(spec(
+      R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "min": 0.02},
+         {"type": "distance", "fixed": "K", "mobile": "ax", "value": 1, "parallel": false})"));
+  ASSERT_TRUE(r.problem);
+  EXPECT_TRUE(r.problem->constraints[0].isRange());
+  EXPECT_EQ(r.problem->constraints[0].min, 0.02);
+  EXPECT_FALSE(r.problem->constraints[1].parallel);
+  Solution s = solve(*r.problem, builtinRegistry());
+  EXPECT_EQ(s.status, Status::kUnhandled);  // until the inequality issue
+}
+
+TEST(SpecParse, UnknownFieldsAreWarnings) {
+  ParseResult r =
+      parse(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp", "colour": "red"})"));
+  ASSERT_TRUE(r.problem);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].path, "constraints[0].colour");
+}
+
+TEST(SpecParse, EveryProblemIsReportedAtOnce) {
+  ParseResult r = parse(spec(R"({"type": "welded", "fixed": "K", "mobile": "tcp"},
+                                {"type": "coincident", "fixed": "nope", "mobile": "tcp"})"));
+  EXPECT_EQ(r.errors.size(), 2u);
+}
+
+}  // namespace
+}  // namespace relpos::test

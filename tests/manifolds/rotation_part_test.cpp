@@ -1,0 +1,64 @@
+// Rotation parts checked against their defining constraints, independently of the matcher.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "random_problems.hpp"
+#include "relpos/manifolds/rotation_part.hpp"
+
+namespace relpos::test {
+namespace {
+
+using manifolds::RotationPart;
+
+TEST(RotationPart, OneParallelKeepsTheVectorParallel) {
+  Rng rng(1);
+  for (int i = 0; i < 100; ++i) {
+    Vector3d um = rng.unit(), uf = rng.unit();
+    RotationPart r = RotationPart::oneParallel(um, uf);
+    double t[1] = {rng.uniform(-3, 3)};
+    EXPECT_TRUE((r.rotation(t) * um).isApprox(uf, 1e-12));
+  }
+}
+
+TEST(RotationPart, OneAngleKeepsTheAngle) {
+  Rng rng(2);
+  for (int i = 0; i < 100; ++i) {
+    Vector3d um = rng.unit(), uf = rng.unit();
+    double a = rng.uniform(0, 3.14159);
+    RotationPart r = RotationPart::oneAngle(um, uf, a);
+    double t[2] = {rng.uniform(-3, 3), rng.uniform(-3, 3)};
+    EXPECT_NEAR(std::acos(std::min(1.0, (r.rotation(t) * um).dot(uf))), a, 1e-7);
+  }
+}
+
+TEST(RotationPart, OneParallelProjectionIsTheClosestSpin) {
+  // Brute force over φ agrees with the closed form.
+  Rng rng(3);
+  for (int i = 0; i < 50; ++i) {
+    RotationPart r = RotationPart::oneParallel(rng.unit(), rng.unit());
+    Matrix3d target = rng.pose().linear();
+    double t[1];
+    r.project(target, t);
+    double best = 1e9;
+    for (int k = 0; k < 3600; ++k) {
+      double phi[1] = {-3.14159265 + k * 2 * 3.14159265 / 3600};
+      best = std::min(best, rotationDistance(r.rotation(phi), target));
+    }
+    EXPECT_LE(rotationDistance(r.rotation(t), target), best + 1e-6);
+  }
+}
+
+TEST(RotationPart, FreeProjectionRecoversRollPitchYaw) {
+  RotationPart r = RotationPart::free();
+  for (double pitch : {-1.5707963267948966, -0.4, 0.0, 1.2, 1.5707963267948966}) {
+    double t[3] = {0.3, pitch, -2.0};
+    Matrix3d R = r.rotation(t);
+    double back[3];
+    r.project(R, back);
+    EXPECT_LT(rotationDistance(r.rotation(back), R), 1e-9) << pitch;
+  }
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,126 @@
+// Rule properties, for every registered rule: applied to pairs of fundamental constraints that a
+// known pose satisfies, a rule never answers "incompatible", never drops a constraint the known
+// pose needs, and the known pose satisfies one of its replacement sets. And every registered rule
+// fires on some covering problem.
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "fundamental_eval.hpp"
+#include "random_problems.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "solve_helpers.hpp"
+#include "test_config.hpp"
+
+#include <filesystem>
+
+namespace relpos::test {
+namespace {
+
+// All fundamental constraints of the problem's first alternative that the known pose satisfies.
+std::vector<Fundamental> satisfiedFundamentals(const KnownProblem& kp) {
+  std::vector<Fundamental> out;
+  for (std::size_t i = 0; i < kp.problem.constraints.size(); ++i) {
+    const InputConstraint& c = kp.problem.constraints[i];
+    Decomposition d;
+    builtinRegistry().constraintType(c.type)->decompose(c, c.fixed.placed(kp.problem.fixed.pose),
+                                                        SourceMask{1} << i, d);
+    for (const auto& alt : d.alternatives) {
+      bool ok = true;
+      for (const Fundamental& f : alt) ok = ok && fundamentalResidual(f, kp.X_WM_star) < 1e-9;
+      if (!ok) continue;
+      for (const Fundamental& f : alt) out.push_back(f);
+      break;
+    }
+  }
+  return out;
+}
+
+TEST(RuleProperties, RulesKeepTheKnownSolution) {
+  const Registry& reg = builtinRegistry();
+  Rng rng(4242);
+  const auto& kinds = singleKinds();
+  std::map<std::string, int> fired;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const bool grid = trial % 2;
+    KnownProblem kp = emptyKnownProblem(rng, grid);
+    NamedFeature shared;
+    for (int k = 0; k < 2; ++k) {
+      addConstraint(kp, kinds[rng.integer(0, static_cast<int>(kinds.size()) - 1)], rng, grid,
+                    k && trial % 3 ? &shared : nullptr);
+      if (k == 0) shared = kp.problem.mobile.features.back();
+    }
+    const Tolerance tol = Tolerance::forScale(kp.problem.lengthScale());
+    std::vector<Fundamental> fs = satisfiedFundamentals(kp);
+    for (std::size_t i = 0; i < fs.size(); ++i)
+      for (std::size_t j = 0; j < fs.size(); ++j) {
+        if (i == j) continue;
+        for (const auto& e : reg.rulesFor(fs[i].kind, fs[j].kind)) {
+          const RuleInfo& rule = reg.rules()[e.rule];
+          const Fundamental& a = e.swapped ? fs[j] : fs[i];
+          const Fundamental& b = e.swapped ? fs[i] : fs[j];
+          RuleOutput out;
+          rule.fn(a, b, tol, out);
+          SCOPED_TRACE(rule.name + " trial " + std::to_string(trial) + " known pose " +
+                       poseText(kp.X_WM_star));
+          if (out.verdict != RuleVerdict::kNoChange) ++fired[rule.name];
+          ASSERT_NE(out.verdict, RuleVerdict::kIncompatible) << out.reason;
+          if (out.verdict != RuleVerdict::kReplace) continue;
+          bool some = false;
+          for (const auto& alt : out.alternatives) {
+            bool all = true;
+            for (const Fundamental& f : alt) all = all && fundamentalResidual(f, kp.X_WM_star) < 1e-6;
+            some = some || all;
+          }
+          EXPECT_TRUE(some) << "the known pose satisfies no replacement set";
+        }
+      }
+  }
+  for (const auto& rule : reg.rules())
+    EXPECT_GT(fired[rule.name], 0) << "rule never fired in the property test: " << rule.name;
+}
+
+TEST(RuleCoverage, EveryRegisteredRuleFiresOnAnExample) {
+  std::set<std::string> fired;
+  for (const auto& e : std::filesystem::directory_iterator(RELPOS_DATA_DIR "/examples")) {
+    if (e.path().extension() != ".json") continue;
+    ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
+    ASSERT_TRUE(r.problem);
+    Solution s = solve(*r.problem, builtinRegistry());
+    for (const char* name : s.rules) fired.insert(name);
+  }
+  for (const auto& rule : builtinRegistry().rules())
+    EXPECT_TRUE(fired.count(rule.name)) << "no example in data/examples fires " << rule.name;
+}
+
+TEST(Combination, InconsistentNamesTheConflictingInputs) {
+  Problem p;
+  p.addFixedFeature("A", Feature::makePoint({0, 0, 0}))
+      .addFixedFeature("B", Feature::makePoint({5, 0, 0}))
+      .addFixedFeature("S", Feature::makePlane({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("P", Feature::makePoint({0, 0, 0}))
+      .addMobileFeature("Q", Feature::makePoint({1, 0, 0}));
+  p.addConstraint("coincident", "S", "P");  // 0: unrelated
+  p.addConstraint("coincident", "A", "P");  // 1
+  p.addConstraint("coincident", "B", "Q");  // 2: |PQ| = 1 but |AB| = 5
+  Solution s = solve(p, builtinRegistry());
+  ASSERT_EQ(s.status, Status::kInconsistent);
+  EXPECT_EQ(s.conflicts, (std::vector<int>{1, 2}));
+  EXPECT_FALSE(s.message.empty());
+}
+
+TEST(Combination, RedundantConstraintIsReported) {
+  Problem p;
+  p.addFixedFeature("A", Feature::makePoint({0, 0, 0}))
+      .addFixedFeature("S", Feature::makePlane({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("P", Feature::makePoint({0, 0, 0}));
+  p.addConstraint("coincident", "A", "P");
+  p.addConstraint("coincident", "S", "P");  // implied: A lies on S
+  Solution s = solve(p, builtinRegistry());
+  ASSERT_EQ(s.status, Status::kSolved);
+  EXPECT_EQ(s.redundant, (std::vector<int>{1}));
+  EXPECT_EQ(s.branches[0].manifold->dof(), 3);
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,69 @@
+// Decomposition (PMF Table I): a pose satisfies an input constraint exactly when it satisfies
+// every fundamental constraint of one of its alternatives. Checked both ways on random problems:
+// the known pose satisfies an alternative, and a pose violating the input violates every one.
+#include <gtest/gtest.h>
+
+#include "evaluator.hpp"
+#include "fundamental_eval.hpp"
+#include "random_problems.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+bool satisfiesSomeAlternative(const Decomposition& d, const Isometry3d& X, double tol) {
+  for (const auto& alt : d.alternatives) {
+    bool all = true;
+    for (const Fundamental& f : alt) all = all && fundamentalResidual(f, X) <= tol;
+    if (all) return true;
+  }
+  return false;
+}
+
+Decomposition decompose(const Problem& p, const InputConstraint& c) {
+  Decomposition d;
+  const ConstraintType* t = builtinRegistry().constraintType(c.type);
+  EXPECT_NE(t, nullptr);
+  t->decompose(c, c.fixed.placed(p.fixed.pose), 1, d);
+  return d;
+}
+
+TEST(Decomposition, KnownPoseSatisfiesAnAlternative) {
+  Rng rng(8);
+  for (const SingleKind& kind : singleKinds())
+    for (int k = 0; k < 20; ++k) {
+      KnownProblem kp = emptyKnownProblem(rng, k % 2);
+      addConstraint(kp, kind, rng, k % 2);
+      Decomposition d = decompose(kp.problem, kp.problem.constraints[0]);
+      ASSERT_EQ(d.unhandled, nullptr) << kind.label;
+      ASSERT_EQ(static_cast<int>(d.alternatives.size()), kind.branches) << kind.label;
+      EXPECT_TRUE(satisfiesSomeAlternative(d, kp.X_WM_star, 1e-9)) << kind.label;
+    }
+}
+
+TEST(Decomposition, ViolatingPosesSatisfyNoAlternative) {
+  Rng rng(9);
+  for (const SingleKind& kind : singleKinds())
+    for (int k = 0; k < 20; ++k) {
+      KnownProblem kp = emptyKnownProblem(rng);
+      addConstraint(kp, kind, rng);
+      Decomposition d = decompose(kp.problem, kp.problem.constraints[0]);
+      Isometry3d X = rng.pose();
+      const bool holds = worstViolation(kp.problem, X) <= 1e-9;
+      EXPECT_EQ(satisfiesSomeAlternative(d, X, 1e-9), holds) << kind.label;
+    }
+}
+
+TEST(Decomposition, MixedConstraintsAreUnhandledNotGuessed) {
+  Problem p;
+  p.addFixedFeature("L", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addMobileFeature("C", Feature::makeCylinder({0, 0, 0}, {0, 1, 0}, 0.5))
+      .addMobileFeature("l", Feature::makeLine({0, 0, 0}, {0, 1, 0}));
+  p.addConstraint("tangent", "L", "C");
+  Solution s = solve(p, builtinRegistry());
+  EXPECT_EQ(s.status, Status::kUnhandled);
+  EXPECT_NE(s.message.find("cylinder-line tangency"), std::string::npos) << s.message;
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,80 @@
+// Repeated solves into a reused Workspace and Solution allocate nothing (ARCHITECTURE.md "Hot
+// path"). Counts every global operator new while solving.
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include <gtest/gtest.h>
+
+#include "random_problems.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "solve_helpers.hpp"
+#include "test_config.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace relpos::test {
+namespace {
+
+long allocationsDuring(const Problem& p, Workspace& ws, Solution& s) {
+  const long before = g_allocations.load();
+  solve(p, builtinRegistry(), SolverOptions(), ws, s);
+  return g_allocations.load() - before;
+}
+
+TEST(Allocation, CounterSeesAllocations) {
+  const long before = g_allocations.load();
+  auto* v = new std::vector<int>(100);
+  delete v;
+  EXPECT_GE(g_allocations.load() - before, 2);
+}
+
+TEST(Allocation, RepeatedSolvesOfUpToEightConstraintsAllocateNothing) {
+  Rng rng(99);
+  Workspace ws;
+  Solution s;
+  const auto& kinds = singleKinds();
+  int checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    KnownProblem kp = emptyKnownProblem(rng, trial % 2);
+    const int n = 1 + trial % 8;
+    NamedFeature shared;
+    for (int k = 0; k < n; ++k) {
+      addConstraint(kp, kinds[rng.integer(0, static_cast<int>(kinds.size()) - 1)], rng, trial % 2,
+                    k && trial % 3 ? &shared : nullptr);
+      if (k == 0) shared = kp.problem.mobile.features.back();
+    }
+    allocationsDuring(kp.problem, ws, s);  // warm-up: buffers reach their working size
+    if (s.status == Status::kUnhandled) continue;  // messages for unhandled may allocate
+    SCOPED_TRACE("trial " + std::to_string(trial) + ": " + s.briefReport());
+    EXPECT_EQ(allocationsDuring(kp.problem, ws, s), 0);
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST(Allocation, WorkedExampleAllocatesNothingAfterWarmUp) {
+  ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json",
+                                builtinRegistry());
+  ASSERT_TRUE(r.problem);
+  Workspace ws;
+  Solution s;
+  allocationsDuring(*r.problem, ws, s);
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(allocationsDuring(*r.problem, ws, s), 0);
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,113 @@
+// Randomised problems of two and three constraints built around a known pose, over every pair of
+// single-constraint kinds, with fresh and with shared mobile features, on generic and on
+// axis-aligned integer geometry. A correct solver may answer `unhandled` (the PMF rule set is not
+// complete) but never `inconsistent`, never a branch with a violating pose, and a `solved` answer
+// must contain the known pose.
+#include <cstdio>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "evaluator.hpp"
+#include "random_problems.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+struct Tally {
+  int solved = 0, unhandled = 0;
+};
+
+void checkKnown(const KnownProblem& kp, std::uint64_t seed, Tally& tally) {
+  ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9) << "generator bug";
+  Solution s = solve(kp.problem, builtinRegistry());
+  ASSERT_NE(s.status, Status::kInconsistent)
+      << "false inconsistent: " << s.message << "\nknown pose " << poseText(kp.X_WM_star);
+  if (s.status == Status::kUnhandled) {
+    ++tally.unhandled;
+    return;
+  }
+  ASSERT_EQ(s.status, Status::kSolved);
+  ++tally.solved;
+  std::string where;
+  EXPECT_LT(worstSampledViolation(kp.problem, s, 16, seed, &where), 1e-7) << where;
+  EXPECT_TRUE(someBranchContains(s, kp.X_WM_star, 1e-6))
+      << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+}
+
+void runPairs(bool grid, bool share, std::uint64_t seed) {
+  Rng rng(seed);
+  const auto& kinds = singleKinds();
+  Tally tally;
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    for (std::size_t j = i; j < kinds.size(); ++j, ++n) {
+      SCOPED_TRACE(std::string(kinds[i].label) + " + " + kinds[j].label);
+      KnownProblem kp = emptyKnownProblem(rng, grid);
+      addConstraint(kp, kinds[i], rng, grid);
+      const NamedFeature* reuse = share ? &kp.problem.mobile.features.back() : nullptr;
+      NamedFeature copy = reuse ? *reuse : NamedFeature{};
+      addConstraint(kp, kinds[j], rng, grid, reuse ? &copy : nullptr);
+      checkKnown(kp, seed + n, tally);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+  std::printf("[pairs grid=%d share=%d] solved %d, unhandled %d (%.1f%% solved)\n", grid, share,
+              tally.solved, tally.unhandled, 100.0 * tally.solved / (tally.solved + tally.unhandled));
+}
+
+TEST(RandomPairs, GenericFresh) { runPairs(false, false, 11); }
+TEST(RandomPairs, GenericShared) { runPairs(false, true, 12); }
+TEST(RandomPairs, GridFresh) { runPairs(true, false, 13); }
+TEST(RandomPairs, GridShared) { runPairs(true, true, 14); }
+
+// Families PMF claims: sets on one shared mobile point (translational) and rotation-only sets.
+void runFamily(const std::vector<int>& family, bool grid, bool share, int trials, int size,
+               std::uint64_t seed, const char* label) {
+  Rng rng(seed);
+  const auto& kinds = singleKinds();
+  Tally tally;
+  for (int t = 0; t < trials; ++t) {
+    KnownProblem kp = emptyKnownProblem(rng, grid);
+    NamedFeature shared;
+    for (int k = 0; k < size; ++k) {
+      const SingleKind& kind = kinds[family[rng.integer(0, static_cast<int>(family.size()) - 1)]];
+      addConstraint(kp, kind, rng, grid, share && k ? &shared : nullptr);
+      if (k == 0) shared = kp.problem.mobile.features.back();
+    }
+    SCOPED_TRACE(std::string(label) + " trial " + std::to_string(t));
+    checkKnown(kp, seed + t, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::printf("[%s grid=%d size=%d] solved %d of %d (%.1f%%)\n", label, grid, size, tally.solved,
+              trials, 100.0 * tally.solved / trials);
+}
+
+std::vector<int> kindsWhere(bool (*pred)(const SingleKind&)) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < singleKinds().size(); ++i)
+    if (pred(singleKinds()[i])) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+TEST(RandomFamilies, TranslationalOnOneMobilePoint) {
+  auto fam = kindsWhere([](const SingleKind& k) {
+    return k.mobile == FeatureKind::kPoint && std::string(k.type) != "angle";
+  });
+  for (bool grid : {false, true})
+    for (int size : {2, 3}) runFamily(fam, grid, true, 150, size, 100 + size + grid, "one-point");
+}
+
+TEST(RandomFamilies, RotationalOnly) {
+  auto fam = kindsWhere([](const SingleKind& k) {
+    const std::string t = k.type;
+    return t == "angle" || t == "parallel" || t == "perpendicular";
+  });
+  for (bool grid : {false, true})
+    for (int size : {2, 3})
+      runFamily(fam, grid, false, 150, size, 200 + size + grid, "rotational");
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -1,0 +1,137 @@
+#include "evaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace relpos::test {
+namespace {
+
+using K = FeatureKind;
+
+struct W {  // a feature in world coordinates
+  K kind;
+  Vector3d a, d;
+  double r;
+};
+
+W place(const Feature& f, const Isometry3d& X) {
+  return {f.kind, X * f.point, (X.linear() * f.direction).normalized(), f.radius};
+}
+
+double acosc(double c) { return std::acos(std::max(-1.0, std::min(1.0, c))); }
+double asinc(double s) { return std::asin(std::max(-1.0, std::min(1.0, s))); }
+
+// Directions parallel per orientation: 0 when they hold.
+double parallelViolation(const Vector3d& u, const Vector3d& v, Orientation o) {
+  const double c = u.dot(v);
+  switch (o) {
+    case Orientation::kAligned: return acosc(c);
+    case Orientation::kOpposed: return acosc(-c);
+    case Orientation::kEither: return std::min(acosc(c), acosc(-c));
+  }
+  return 1e9;
+}
+
+double pointLine(const Vector3d& p, const W& l) { return (p - l.a).cross(l.d).norm(); }
+double pointPlane(const Vector3d& p, const W& pl) { return (p - pl.a).dot(pl.d); }
+
+double skewDistance(const W& l1, const W& l2) {
+  Vector3d n = l1.d.cross(l2.d);
+  if (n.norm() < 1e-12) return pointLine(l2.a, l1);
+  return std::abs((l2.a - l1.a).dot(n)) / n.norm();
+}
+
+// |x - target| for exact constraints, distance outside [min, max] for ranges.
+double off(double x, const InputConstraint& c) {
+  if (c.has_value) return std::abs(x - c.value);
+  if (x < c.min) return c.min - x;
+  if (x > c.max) return x - c.max;
+  return 0.0;
+}
+
+}  // namespace
+
+double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM) {
+  const W F = place(c.fixed, X_WF), M = place(c.mobile, X_WM);
+  const std::string& t = c.type;
+  const bool has_point = F.kind == K::kPoint || M.kind == K::kPoint;
+  const W& P = M.kind == K::kPoint ? M : F;  // the point, when there is one
+  const W& X = M.kind == K::kPoint ? F : M;  // the other feature
+  auto both = [&](K a, K b) {
+    return (F.kind == a && M.kind == b) || (F.kind == b && M.kind == a);
+  };
+  if (t == "distance" || t == "coincident") {
+    const bool dist = t == "distance";
+    const InputConstraint& cc = c;
+    auto val = [&](double x) { return dist ? off(x, cc) : std::abs(x); };
+    if (has_point) {
+      switch (X.kind) {
+        case K::kPoint: return val((P.a - X.a).norm());
+        case K::kLine: return val(pointLine(P.a, X));
+        case K::kPlane: return val(pointPlane(P.a, X));
+        case K::kCylinder: return std::abs(pointLine(P.a, X) - X.r);  // point on cylinder
+      }
+    }
+    if (F.kind == K::kLine && M.kind == K::kLine) {
+      if (dist && !c.parallel) return off(skewDistance(F, M), c);
+      return std::max(parallelViolation(M.d, F.d, c.orientation), val(pointLine(M.a, F)));
+    }
+    if (both(K::kLine, K::kPlane)) {
+      const W& L = F.kind == K::kLine ? F : M;
+      const W& Pl = F.kind == K::kPlane ? F : M;
+      return std::max(std::abs(L.d.dot(Pl.d)), val(pointPlane(L.a, Pl)));
+    }
+    if (F.kind == K::kPlane && M.kind == K::kPlane)
+      return std::max(parallelViolation(M.d, F.d, c.orientation), val((M.a - F.a).dot(F.d)));
+  }
+  if (t == "angle") {
+    if (both(K::kLine, K::kPlane)) {
+      const W& L = F.kind == K::kLine ? F : M;
+      const W& Pl = F.kind == K::kPlane ? F : M;
+      return off(asinc(L.d.dot(Pl.d)), c);
+    }
+    return off(acosc(F.d.dot(M.d)), c);
+  }
+  if (t == "parallel") {
+    if (F.kind != M.kind) return std::abs(F.d.dot(M.d));
+    return parallelViolation(M.d, F.d, c.orientation);
+  }
+  if (t == "perpendicular") {
+    if (F.kind != M.kind) return parallelViolation(M.d, F.d, c.orientation);
+    return std::abs(F.d.dot(M.d));
+  }
+  if (t == "tangent") {
+    if (F.kind == K::kCylinder && M.kind == K::kCylinder)
+      return std::max(parallelViolation(M.d, F.d, Orientation::kEither),
+                      std::abs(pointLine(M.a, F) - (F.r + M.r)));
+    if (both(K::kCylinder, K::kPlane)) {
+      const W& C = F.kind == K::kCylinder ? F : M;
+      const W& Pl = F.kind == K::kPlane ? F : M;
+      const double s = pointPlane(C.a, Pl);
+      double side = 1e9;
+      if (c.orientation != Orientation::kOpposed) side = std::min(side, std::abs(s + C.r));
+      if (c.orientation != Orientation::kAligned) side = std::min(side, std::abs(s - C.r));
+      return std::max(std::abs(C.d.dot(Pl.d)), side);
+    }
+    if (both(K::kCylinder, K::kLine)) {
+      const W& C = F.kind == K::kCylinder ? F : M;
+      const W& L = F.kind == K::kLine ? F : M;
+      return std::abs(skewDistance(C, L) - C.r);
+    }
+  }
+  return 1e9;  // unknown to this evaluator: never "satisfied"
+}
+
+double worstViolation(const Problem& p, const Isometry3d& X_WM, int* which) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < p.constraints.size(); ++i) {
+    double v = violation(p.constraints[i], p.fixed.pose, X_WM);
+    if (v > worst || std::isnan(v)) {
+      worst = std::isnan(v) ? 1e9 : v;
+      if (which) *which = static_cast<int>(i);
+    }
+  }
+  return worst;
+}
+
+}  // namespace relpos::test

@@ -1,0 +1,82 @@
+#include "solve_helpers.hpp"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "evaluator.hpp"
+#include "relpos/rules/builtin.hpp"
+
+namespace relpos::test {
+
+const Registry& builtinRegistry() {
+  static const Registry reg = [] {
+    Registry r;
+    registerBuiltins(r);
+    r.freeze();
+    return r;
+  }();
+  return reg;
+}
+
+Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
+  Params t{};
+  for (int i = 0; i < m.dof(); ++i) {
+    const Parameter p = m.parameter(i);
+    const double lo = std::isfinite(p.min) ? p.min : -window;
+    const double hi = std::isfinite(p.max) ? p.max : window;
+    t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
+  }
+  return t;
+}
+
+std::string poseText(const Isometry3d& X) {
+  std::ostringstream os;
+  os.precision(17);
+  Quaterniond q(X.linear());
+  os << "position [" << X.translation().transpose() << "] quaternion xyzw [" << q.x() << " "
+     << q.y() << " " << q.z() << " " << q.w() << "]";
+  return os.str();
+}
+
+double worstSampledViolation(const Problem& p, const Solution& s, int n, std::uint64_t seed,
+                             std::string* where) {
+  std::mt19937_64 rng(seed);
+  double worst = 0.0;
+  for (std::size_t b = 0; b < s.branches.size(); ++b) {
+    const Manifold& m = *s.branches[b].manifold;
+    for (int k = 0; k < n; ++k) {
+      Params t = sampleParams(m, rng);
+      Isometry3d X = m.pose(t);
+      int which = -1;
+      double v = worstViolation(p, X, &which);
+      if (v > worst) {
+        worst = v;
+        if (where) {
+          std::ostringstream os;
+          os << "branch " << b << " (" << m.describe() << ") constraint " << which << " at "
+             << poseText(X);
+          *where = os.str();
+        }
+      }
+    }
+  }
+  return worst;
+}
+
+bool someBranchContains(const Solution& s, const Isometry3d& X, double tol) {
+  for (const Branch& b : s.branches) {
+    Isometry3d Y = b.manifold->pose(nearestParams(*b.manifold, X));
+    if (poseDistance(X, Y) <= tol) return true;
+  }
+  return false;
+}
+
+std::string describeBranches(const Solution& s) {
+  std::string out = std::string(toString(s.status)) + " " + s.message;
+  for (const Branch& b : s.branches)
+    out += "\n  " + b.manifold->describe() + ", " + std::to_string(b.manifold->dof()) + " DOF";
+  return out;
+}
+
+}  // namespace relpos::test
