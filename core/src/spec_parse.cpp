@@ -12,7 +12,8 @@
 namespace relpos {
 namespace {
 
-using nlohmann::json;
+// ordered_json keeps the spec's own order of features (messages list them as the user wrote them).
+using json = nlohmann::ordered_json;
 
 class Parser {
  public:
@@ -479,6 +480,11 @@ ParseResult parseSpec(const std::string& text, const Registry& registry,
     out.errors.push_back({"", "malformed JSON at line " + std::to_string(line) + ", column " +
                                   std::to_string(col) + ": " +
                                   (p == std::string::npos ? what : what.substr(p))});
+    return out;
+  } catch (const json::exception& e) {  // e.g. a number too large for a double
+    std::string what = e.what();
+    auto p = what.find("] ");
+    out.errors.push_back({"", "malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2))});
     return out;
   }
   Parser(registry, out).document(j, default_name);

@@ -1,6 +1,7 @@
 // The separable matcher (PMF §V, Algorithm 1): matches the combined rotational set to a row of
 // Table III and the combined translational set to a row of Table IV, and emits one branch per
 // rotational solution.
+#include <algorithm>
 #include <cmath>
 
 #include "relpos/core/solution.hpp"
@@ -62,59 +63,90 @@ MatchResult twoParallels(MatchContext& ctx, const Angle& a, const Angle& b,
 
 // Two angles (App. III-D): R(φ) = R(u_f, φ) R0 R(u_m, θ(φ)), φ restricted to where the second
 // angle can be met: w(φ)·v_f ∈ [cos(σ_m + β), cos(σ_m − β)] with w(φ) = R(u_f, φ) R0 u_m.
-MatchResult twoAngles(MatchContext& ctx, const Angle& a, const Angle& b,
-                      RotationAlternatives& out) {
-  const Tolerance& tol = ctx.tol;
+struct PhiIntervals {
+  struct Interval {
+    double lo, hi;
+    bool periodic;
+  } iv[2];
+  int count = 0;  // 0: no rotation satisfies both angles
+  bool degenerate = false;
+};
+
+PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const RotationPart& base,
+                               const Tolerance& tol) {
+  PhiIntervals out;
   const double sigma_m = angleBetween(a.u_m, b.u_m);
   const Vector3d vf_perp = b.u_f - b.u_f.dot(a.u_f) * a.u_f;
-  if (std::sin(sigma_m) <= tol.angle || vf_perp.norm() <= tol.angle) return MatchResult::kNoMatch;
-  RotationPart base = RotationPart::oneAngle(a.u_m, a.u_f, a.alpha);
-  base.kind = RotationKind::kTwoAngle;
-  base.v_m = b.u_m;
-  base.v_f = b.u_f;
-  base.cos_beta = std::cos(b.alpha);
+  if (std::sin(sigma_m) <= tol.angle || vf_perp.norm() <= tol.angle) {
+    out.degenerate = true;
+    return out;
+  }
   const Vector3d w0 = base.R0 * a.u_m;
   const Vector3d w0_perp = w0 - w0.dot(a.u_f) * a.u_f;
   const double h0 = std::cos(a.alpha) * a.u_f.dot(b.u_f);
   const double amp = w0_perp.norm() * vf_perp.norm();
   // φ0: the φ at which w(φ) leans furthest toward v_f.
   const double phi0 = std::atan2(w0_perp.cross(vf_perp).dot(a.u_f), w0_perp.dot(vf_perp));
-  const double lo_h = std::cos(sigma_m + b.alpha), hi_h = std::cos(sigma_m - b.alpha);
+  const double L = (std::cos(sigma_m + b.alpha) - h0) / amp;
+  const double U = (std::cos(sigma_m - b.alpha) - h0) / amp;
   const double eps = 1e-12;
-  double L = (lo_h - h0) / amp, U = (hi_h - h0) / amp;
-  if (L > 1.0 + eps || U < -1.0 - eps)
-    return inconsistent(ctx, a.sources | b.sources,
-                        "two angle constraints that no rotation satisfies together");
+  if (L > 1.0 + eps || U < -1.0 - eps) return out;
   const double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
   const double psi_out = std::acos(clampUnit(L));  // |φ − φ0| <= psi_out
-  struct Interval {
-    double lo, hi;
-    bool periodic;
-  } iv[2];
-  int n_iv = 0;
   if (psi_in <= tol.angle && psi_out >= kPi - tol.angle) {
-    iv[n_iv++] = {-kPi, kPi, true};
+    out.iv[out.count++] = {-kPi, kPi, true};
   } else if (psi_in <= tol.angle) {
-    iv[n_iv++] = {phi0 - psi_out, phi0 + psi_out, false};
+    out.iv[out.count++] = {phi0 - psi_out, phi0 + psi_out, false};
   } else if (psi_out >= kPi - tol.angle) {
-    iv[n_iv++] = {phi0 + psi_in, phi0 + 2 * kPi - psi_in, false};
+    out.iv[out.count++] = {phi0 + psi_in, phi0 + 2 * kPi - psi_in, false};
   } else {
-    iv[n_iv++] = {phi0 + psi_in, phi0 + psi_out, false};
-    iv[n_iv++] = {phi0 - psi_out, phi0 - psi_in, false};
+    out.iv[out.count++] = {phi0 + psi_in, phi0 + psi_out, false};
+    out.iv[out.count++] = {phi0 - psi_out, phi0 - psi_in, false};
   }
-  for (int k = 0; k < n_iv; ++k) {
-    if (iv[k].hi - iv[k].lo <= tol.angle) {
+  return out;
+}
+
+RotationPart twoAngleBase(const Angle& a, const Angle& b) {
+  RotationPart base = RotationPart::oneAngle(a.u_m, a.u_f, a.alpha);
+  base.kind = RotationKind::kTwoAngle;
+  base.v_m = b.u_m;
+  base.v_f = b.u_f;
+  base.cos_beta = std::cos(b.alpha);
+  return base;
+}
+
+MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
+                      RotationAlternatives& out) {
+  // Either constraint can carry the free spin φ; take the one that splits the set into fewer
+  // pieces (a full turn of φ gives each connected loop as one branch).
+  const Angle* a = &a0;
+  const Angle* b = &b0;
+  RotationPart base = twoAngleBase(*a, *b);
+  PhiIntervals iv = twoAngleIntervals(*a, *b, base, ctx.tol);
+  RotationPart base2 = twoAngleBase(b0, a0);
+  PhiIntervals iv2 = twoAngleIntervals(b0, a0, base2, ctx.tol);
+  if (iv.degenerate || (!iv2.degenerate && iv2.count < iv.count)) {
+    std::swap(a, b);
+    base = base2;
+    iv = iv2;
+  }
+  if (iv.degenerate) return MatchResult::kNoMatch;
+  if (iv.count == 0)
+    return inconsistent(ctx, a->sources | b->sources,
+                        "two angle constraints that no rotation satisfies together");
+  for (int k = 0; k < iv.count; ++k) {
+    if (iv.iv[k].hi - iv.iv[k].lo <= ctx.tol.angle) {
       // A single φ: both θ signs meet, one discrete rotation.
-      double th[1] = {0.5 * (iv[k].lo + iv[k].hi)};
+      double th[1] = {0.5 * (iv.iv[k].lo + iv.iv[k].hi)};
       out.add(RotationPart::fixed(base.rotation(th)));
       continue;
     }
     for (double sign : {1.0, -1.0}) {
       RotationPart r = base;
       r.sign = sign;
-      r.phi_lo = iv[k].lo;
-      r.phi_hi = iv[k].hi;
-      r.phi_periodic = iv[k].periodic;
+      r.phi_lo = iv.iv[k].lo;
+      r.phi_hi = iv.iv[k].hi;
+      r.phi_periodic = iv.iv[k].periodic;
       out.add(r);
     }
   }
@@ -175,6 +207,17 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c,
   return MatchResult::kMatched;
 }
 
+// A total order on angle constraints by their geometry alone, so that the branches do not depend
+// on the order in which the user listed the constraints.
+bool geometricLess(const Angle& a, const Angle& b) {
+  if (a.alpha != b.alpha) return a.alpha < b.alpha;
+  for (int k = 0; k < 3; ++k) {
+    if (a.u_f[k] != b.u_f[k]) return a.u_f[k] < b.u_f[k];
+    if (a.u_m[k] != b.u_m[k]) return a.u_m[k] < b.u_m[k];
+  }
+  return false;
+}
+
 MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
   const auto& rs = ctx.set.rotational;
   Angle ang[kMaxFundamentals];
@@ -184,6 +227,7 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
     n_par += ang[n].parallel;
     ++n;
   }
+  std::sort(ang, ang + n, geometricLess);
   if (n == 0) {
     out.add(RotationPart::free());
     return MatchResult::kMatched;

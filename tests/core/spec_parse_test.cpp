@@ -120,7 +120,7 @@ TEST(SpecParse, UnknownFeatureOrConstraintType) {
               "constraints[0].mobile",
               "no feature 'tcp2' on mobile object 'gripper' (it has: tcp, palm, ax)");
   std::string s = kBase;
-  s.replace(s.find("\"Q\": {\"point\""), 9, "\"Q\": {\"pint\"");
+  s.replace(s.find("\"point\": [-2"), 8, "\"pint\": ");
   expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", s.c_str()),
               "fixed.features.Q.pint", "unknown feature kind 'pint'");
 }
@@ -141,9 +141,9 @@ TEST(SpecParse, ZeroDirectionNanAndRadius) {
   r.replace(r.find("\"radius\": 0.5"), 13, "\"radius\": -1");
   expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", r.c_str()),
               "fixed.features.C.cylinder.radius", "positive");
-  // JSON has no NaN literal; a huge number overflows to infinity.
-  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": 1e999})"),
-              "constraints[0].value", "not a finite number");
+  // JSON has no NaN literal; a number too large for a double is refused, not a crash.
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": 1e999})"), "",
+              "number overflow");
 }
 
 TEST(SpecParse, ValueProblems) {

@@ -19,8 +19,8 @@ inline double fundamentalResidual(const Fundamental& f, const Isometry3d& X) {
     case FundamentalKind::kPointLine: return std::abs((p - q).cross(d).norm() - f.value());
     case FundamentalKind::kPointPlane: return std::abs((p - q).dot(d) - f.value());
     case FundamentalKind::kAngle: {
-      const double c = std::max(-1.0, std::min(1.0, (R * f.p).dot(f.q)));
-      return std::abs(std::acos(c) - f.value());
+      const Vector3d u = R * f.p;
+      return std::abs(std::atan2(u.cross(f.q).norm(), u.dot(f.q)) - f.value());
     }
   }
   return 1e9;

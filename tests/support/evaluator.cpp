@@ -18,16 +18,17 @@ W place(const Feature& f, const Isometry3d& X) {
   return {f.kind, X * f.point, (X.linear() * f.direction).normalized(), f.radius};
 }
 
-double acosc(double c) { return std::acos(std::max(-1.0, std::min(1.0, c))); }
-double asinc(double s) { return std::asin(std::max(-1.0, std::min(1.0, s))); }
+// arccos(u·v) and arcsin(u·v) of SPEC, computed through atan2 so that angles near 0, π and
+// ±π/2 keep full precision (acos(1 − ε) would turn rounding into 1e-8 "violations").
+double angleOf(const Vector3d& u, const Vector3d& v) { return std::atan2(u.cross(v).norm(), u.dot(v)); }
+double elevation(const Vector3d& d, const Vector3d& n) { return 3.14159265358979323846 / 2 - angleOf(d, n); }
 
 // Directions parallel per orientation: 0 when they hold.
 double parallelViolation(const Vector3d& u, const Vector3d& v, Orientation o) {
-  const double c = u.dot(v);
   switch (o) {
-    case Orientation::kAligned: return acosc(c);
-    case Orientation::kOpposed: return acosc(-c);
-    case Orientation::kEither: return std::min(acosc(c), acosc(-c));
+    case Orientation::kAligned: return angleOf(u, v);
+    case Orientation::kOpposed: return angleOf(u, -v);
+    case Orientation::kEither: return std::min(angleOf(u, v), angleOf(u, -v));
   }
   return 1e9;
 }
@@ -88,9 +89,9 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
     if (both(K::kLine, K::kPlane)) {
       const W& L = F.kind == K::kLine ? F : M;
       const W& Pl = F.kind == K::kPlane ? F : M;
-      return off(asinc(L.d.dot(Pl.d)), c);
+      return off(elevation(L.d, Pl.d), c);
     }
-    return off(acosc(F.d.dot(M.d)), c);
+    return off(angleOf(F.d, M.d), c);
   }
   if (t == "parallel") {
     if (F.kind != M.kind) return std::abs(F.d.dot(M.d));
