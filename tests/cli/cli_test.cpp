@@ -1,6 +1,7 @@
 // The relpos command and the API example, run as a user runs them.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -144,6 +145,30 @@ TEST(Cli, ApiExampleRuns) {
   std::string out = slurp(d / "out");
   EXPECT_NE(out.find("rotation OneParallel, translation Point, 1 DOF"), std::string::npos) << out;
   EXPECT_NE(out.find("pose(phi=0): translation [5, "), std::string::npos) << out;
+}
+
+}  // namespace
+
+namespace {
+
+// README code snippets are copies of compiled examples (STYLE.md §14): the README's C++ block is
+// exactly examples/api_example.cpp.
+TEST(Readme, ApiSnippetIsTheCompiledExample) {
+  const std::string readme = slurp(RELPOS_DATA_DIR "/../README.md");
+  const std::string code = slurp(RELPOS_DATA_DIR "/../examples/api_example.cpp");
+  ASSERT_FALSE(code.empty());
+  EXPECT_NE(readme.find("```cpp\n" + code + "```"), std::string::npos);
+}
+
+TEST(Readme, StartsWithTheTwoCommands) {
+  const std::string readme = slurp(RELPOS_DATA_DIR "/../README.md");
+  const auto block = readme.find("```sh\n");
+  ASSERT_NE(block, std::string::npos);
+  const auto end = readme.find("```", block + 6);
+  const std::string cmds = readme.substr(block + 6, end - block - 6);
+  EXPECT_EQ(cmds.find("./scripts/run_examples.sh"), 0u) << cmds;
+  EXPECT_NE(cmds.find("\n./scripts/run_tests.sh"), std::string::npos) << cmds;
+  EXPECT_EQ(std::count(cmds.begin(), cmds.end(), '\n'), 2) << cmds;
 }
 
 }  // namespace

@@ -1,0 +1,70 @@
+// solve() on every bundled example (each single-constraint kind, the PMF worked example and the
+// two-constraint cases), into a reused Workspace and Solution as a control loop would call it;
+// and the nearest-pose query on the worked example.
+//   build/bench/relpos_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "relpos/core/solver.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "relpos/rules/builtin.hpp"
+
+namespace {
+
+const relpos::Registry& registry() {
+  static const relpos::Registry reg = [] {
+    relpos::Registry r;
+    relpos::registerBuiltins(r);
+    r.freeze();
+    return r;
+  }();
+  return reg;
+}
+
+relpos::Problem load(const std::string& file) {
+  relpos::ParseResult r = relpos::parseSpecFile(file, registry());
+  if (!r.problem) throw std::runtime_error("cannot parse " + file);
+  return *r.problem;
+}
+
+void BM_Solve(benchmark::State& state, const std::string& file) {
+  const relpos::Problem p = load(file);
+  relpos::Workspace ws;
+  relpos::Solution s;
+  for (auto _ : state) {
+    relpos::solve(p, registry(), relpos::SolverOptions(), ws, s);
+    benchmark::DoNotOptimize(s.branches.data());
+  }
+  state.counters["branches"] = static_cast<double>(s.branches.size());
+  state.SetLabel(relpos::toString(s.status));
+}
+
+void BM_NearestWorkedExample(benchmark::State& state) {
+  const relpos::Problem p = load(RELPOS_DATA_DIR "/examples/pmf-simple-example.json");
+  relpos::Solution s = relpos::solve(p, registry());
+  for (auto _ : state) {
+    relpos::NearestPose n = relpos::nearestOnBranch(s.branches[0], p.mobile.pose);
+    benchmark::DoNotOptimize(n.distance);
+  }
+}
+BENCHMARK(BM_NearestWorkedExample);
+
+int registerExamples() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(RELPOS_DATA_DIR "/examples"))
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files)
+    benchmark::RegisterBenchmark(("solve/" + std::filesystem::path(f).stem().string()).c_str(),
+                                 BM_Solve, f);
+  return 0;
+}
+const int kRegistered = registerExamples();
+
+}  // namespace
+
+BENCHMARK_MAIN();
