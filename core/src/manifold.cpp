@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace relpos {
 
@@ -23,16 +24,12 @@ double clampParam(const Parameter& p, double v) {
 }
 }  // namespace
 
-Params nearestParams(const Manifold& m, const Isometry3d& X) {
-  // Compass search: deterministic, derivative free, monotone. The projection is exact for poses
-  // on the manifold and a good seed elsewhere; the search trades a little translation for
-  // rotation (or back) where the combined metric prefers it.
+namespace {
+
+// Compass search on poseDistance from `start`: deterministic, derivative free, monotone.
+Params compassSearch(const Manifold& m, const Isometry3d& X, const Parameter* par, Params best,
+                     double* best_d) {
   const int n = m.dof();
-  Params best = m.project(X);
-  double best_d = poseDistance(m.pose(best), X);
-  if (n == 0 || best_d == 0.0) return best;
-  Parameter par[kMaxDof];
-  for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   double step = 0.25;
   for (int iter = 0; iter < 200 && step > 1e-10; ++iter) {
     bool improved = false;
@@ -42,14 +39,55 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
         double s = par[i].kind == ParamKind::kLength ? step * (1.0 + std::abs(best[i])) : step;
         t[i] = clampParam(par[i], t[i] + sgn * s);
         double d = poseDistance(m.pose(t), X);
-        if (d < best_d - 1e-15) {
-          best_d = d;
+        if (d < *best_d - 1e-15) {
+          *best_d = d;
           best = t;
           improved = true;
         }
       }
     }
     if (!improved) step *= 0.5;
+  }
+  return best;
+}
+
+}  // namespace
+
+Params nearestParams(const Manifold& m, const Isometry3d& X) {
+  // The projection is exact for poses on the manifold and usually the right basin elsewhere; a
+  // coarse grid over the angle parameters catches the other basins of the combined metric
+  // (translation + rotation), and a compass search refines the two best starts.
+  const int n = m.dof();
+  Params proj = m.project(X);
+  double proj_d = poseDistance(m.pose(proj), X);
+  if (n == 0 || proj_d == 0.0) return proj;
+  Parameter par[kMaxDof];
+  int angles[kMaxDof], n_angles = 0;
+  for (int i = 0; i < n; ++i) {
+    par[i] = m.parameter(i);
+    if (par[i].kind == ParamKind::kAngle && n_angles < 3) angles[n_angles++] = i;
+  }
+  constexpr int kGrid = 4;
+  Params grid_best = proj;
+  double grid_d = std::numeric_limits<double>::infinity();
+  int combos = 1;
+  for (int k = 0; k < n_angles; ++k) combos *= kGrid;
+  for (int c = 1; c < combos; ++c) {  // c = 0 is the projection itself
+    Params t = proj;
+    for (int k = 0, code = c; k < n_angles; ++k, code /= kGrid) {
+      const Parameter& p = par[angles[k]];
+      const double lo = p.periodic ? -kPi : p.min, hi = p.periodic ? kPi : p.max;
+      t[angles[k]] = p.periodic ? t[angles[k]] + (hi - lo) * (code % kGrid) / kGrid
+                                : lo + (hi - lo) * (code % kGrid) / (kGrid - 1);
+    }
+    const double d = poseDistance(m.pose(t), X);
+    if (d < grid_d) grid_d = d, grid_best = t;
+  }
+  Params best = compassSearch(m, X, par, proj, &proj_d);
+  double best_d = proj_d;
+  if (combos > 1) {
+    Params other = compassSearch(m, X, par, grid_best, &grid_d);
+    if (grid_d < best_d - 1e-12) best = other, best_d = grid_d;
   }
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);

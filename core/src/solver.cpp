@@ -15,12 +15,17 @@ bool SolverOptions::isValid(std::string* why) const {
     if (why) *why = "max_rule_steps must be positive";
     return false;
   }
+  if (!(length_tolerance > 0 && length_tolerance < 1e-2 && angle_tolerance > 0 &&
+        angle_tolerance < 1e-2)) {
+    if (why) *why = "tolerances must be in (0, 0.01)";
+    return false;
+  }
   return true;
 }
 
 Workspace::Workspace() {
   pending.reserve(64);
-  scratch.reserve(kMaxFundamentals);
+  problems.reserve(4);
 }
 
 namespace {
@@ -153,6 +158,21 @@ void decomposeAll(const Problem& problem, SolveState& st) {
                            c.type + "'");
       return;
     }
+    // Problems built in code skip the parser: refuse what it would have refused.
+    if (!type->accepts_pair(c.fixed.kind, c.mobile.kind)) {
+      setUnhandled(st, "constraint " + std::to_string(i) + " is invalid: type '" + c.type +
+                           "' does not accept " + toString(c.fixed.kind) + "-" +
+                           toString(c.mobile.kind) + " features");
+      return;
+    }
+    if (type->check) {
+      st.ws.problems.clear();
+      type->check(c, st.ws.problems);
+      if (!st.ws.problems.empty()) {
+        setUnhandled(st, "constraint " + std::to_string(i) + " is invalid: " + st.ws.problems[0]);
+        return;
+      }
+    }
     dec.alternatives.clear();
     dec.unhandled = nullptr;
     Feature fixed_W = c.fixed.placed(problem.fixed.pose);
@@ -191,7 +211,8 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
            Workspace& ws, Solution& solution) {
   const auto t0 = std::chrono::steady_clock::now();
   solution.clear();
-  const Tolerance tol = Tolerance::forScale(problem.lengthScale());
+  const Tolerance tol = Tolerance::forScale(problem.lengthScale(), options.length_tolerance,
+                                           options.angle_tolerance);
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
 
   std::string why;

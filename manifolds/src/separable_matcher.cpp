@@ -53,8 +53,7 @@ MatchResult inconsistent(MatchContext& ctx, SourceMask m, const char* why) {
 MatchResult twoParallels(MatchContext& ctx, const Angle& a, const Angle& b,
                          RotationAlternatives& out) {
   if (a.u_m.cross(b.u_m).norm() <= ctx.tol.angle) return MatchResult::kNoMatch;
-  if (!ctx.tol.equalAngle(angleBetween(a.u_m, b.u_m), angleBetween(a.u_f, b.u_f)) &&
-      std::abs(angleBetween(a.u_m, b.u_m) - angleBetween(a.u_f, b.u_f)) > 1e-9)
+  if (!ctx.tol.equalAngle(angleBetween(a.u_m, b.u_m), angleBetween(a.u_f, b.u_f)))
     return inconsistent(ctx, a.sources | b.sources,
                         "two parallelisms whose mobile and fixed vectors form different angles");
   out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)));

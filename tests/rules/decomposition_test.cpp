@@ -67,3 +67,43 @@ TEST(Decomposition, MixedConstraintsAreUnhandledNotGuessed) {
 
 }  // namespace
 }  // namespace relpos::test
+
+namespace relpos::test {
+namespace {
+
+TEST(Decomposition, ProblemsBuiltInCodeAreCheckedLikeSpecs) {
+  Problem p;
+  p.addFixedFeature("Q", Feature::makePoint({0, 0, 0}))
+      .addFixedFeature("K", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addMobileFeature("l", Feature::makeLine({0, 0, 0}, {0, 1, 0}))
+      .addMobileFeature("p", Feature::makePoint({0, 0, 0}));
+  p.addConstraint("angle", "Q", "l", 1.0);  // an angle needs two directions
+  Solution s = solve(p, builtinRegistry());
+  EXPECT_EQ(s.status, Status::kUnhandled);
+  EXPECT_NE(s.message.find("does not accept point-line"), std::string::npos) << s.message;
+  Problem q;
+  q.addFixedFeature("K", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addMobileFeature("p", Feature::makePoint({0, 0, 0}));
+  q.addConstraint("distance", "K", "p", -2.0);
+  Solution t = solve(q, builtinRegistry());
+  EXPECT_EQ(t.status, Status::kUnhandled);
+  EXPECT_NE(t.message.find("negative value"), std::string::npos) << t.message;
+}
+
+TEST(Decomposition, LooserToleranceAcceptsRoundedData) {
+  // Two parallelisms whose angles differ by 1e-7 (six-digit CAD data): inconsistent at the
+  // default 1e-9, solved with a 1e-6 angle tolerance.
+  Problem p;
+  p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addFixedFeature("D", Feature::makeLine({0, 0, 0}, {0.707107, 0.707107, 0}))
+      .addMobileFeature("x", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addMobileFeature("d", Feature::makeLine({0, 0, 0}, {0.7071067811865476, 0.7071067811865476 + 2e-7, 0}));
+  p.addConstraint("parallel", "X", "x").addConstraint("parallel", "D", "d");
+  EXPECT_EQ(solve(p, builtinRegistry()).status, Status::kInconsistent);
+  SolverOptions loose;
+  loose.angle_tolerance = 1e-6;
+  EXPECT_EQ(solve(p, builtinRegistry(), loose).status, Status::kSolved);
+}
+
+}  // namespace
+}  // namespace relpos::test

@@ -15,6 +15,11 @@ namespace relpos {
 struct SolverOptions {
   int max_branches = 64;      // more alternatives than this -> unhandled
   int max_rule_steps = 256;   // rewrite steps per constraint set before giving up (unhandled)
+  // Every rule condition ("parallel", "d_a = d_b", "on the line") is decided within these:
+  // lengths relative to the problem's size (its largest coordinate, at least 1), angles in
+  // radians. Loosen them for data with few significant digits (e.g. 1e-6 for CAD exports).
+  double length_tolerance = 1e-9;
+  double angle_tolerance = 1e-9;
   bool isValid(std::string* why) const;
 };
 
@@ -23,8 +28,8 @@ class Workspace {
   Workspace();
   // Internal buffers (public for the solver's translation units; not part of the API contract).
   std::vector<ConstraintSet> pending;  // constraint sets still to combine (the branch stack)
-  std::vector<Fundamental> scratch;
   RuleOutput rule_out;
+  std::vector<std::string> problems;  // value checks of constraints built in code
 };
 
 void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,

@@ -9,9 +9,10 @@ struct Tolerance {
   double length = 1e-9;  // absolute length tolerance, already scaled
   double angle = 1e-9;   // radians
 
-  static Tolerance forScale(double scale) {
+  static Tolerance forScale(double scale, double relative_length = 1e-9, double angle = 1e-9) {
     Tolerance t;
-    t.length = 1e-9 * (scale > 1.0 ? scale : 1.0);
+    t.length = relative_length * (scale > 1.0 ? scale : 1.0);
+    t.angle = angle;
     return t;
   }
   bool zeroLength(double v) const { return std::abs(v) <= length; }
