@@ -37,10 +37,12 @@ TEST(Examples, MatchExpectedStatusAndDof) {
     std::sort(dofs.begin(), dofs.end());
     std::sort(want.begin(), want.end());
     EXPECT_EQ(dofs, want) << describeBranches(s);
-    if (x.contains("redundant"))
+    if (x.contains("redundant")) {
       EXPECT_EQ(s.redundant, x["redundant"].get<std::vector<int>>());
-    if (x.contains("conflicts"))
+    }
+    if (x.contains("conflicts")) {
       EXPECT_EQ(s.conflicts, x["conflicts"].get<std::vector<int>>());
+    }
     std::string where;
     EXPECT_LT(worstSampledViolation(*r.problem, s, 200, 7, &where), 1e-9) << where;
     ++checked;
