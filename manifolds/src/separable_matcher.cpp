@@ -206,6 +206,31 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c,
   return MatchResult::kMatched;
 }
 
+// Two parallelisms on independent vectors fix the rotation (App. III-A); every other rotational
+// constraint then either holds (implied) or proves the set inconsistent.
+MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
+                               RotationAlternatives& out) {
+  for (int i = 0; i < n; ++i) {
+    if (!ang[i].parallel) continue;
+    for (int j = i + 1; j < n; ++j) {
+      if (!ang[j].parallel || ang[i].u_m.cross(ang[j].u_m).norm() <= ctx.tol.angle) continue;
+      RotationAlternatives two;
+      MatchResult r = twoParallels(ctx, ang[i], ang[j], two);
+      if (r != MatchResult::kMatched) return r;
+      const Matrix3d R = two.parts[0].R0;
+      for (int k = 0; k < n; ++k) {
+        if (!ctx.tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
+          return inconsistent(ctx, ang[i].sources | ang[j].sources | ang[k].sources,
+                              "a rotation fixed by two parallelisms violates another rotational "
+                              "constraint");
+      }
+      out.add(two.parts[0]);
+      return MatchResult::kMatched;
+    }
+  }
+  return MatchResult::kNoMatch;
+}
+
 // A total order on angle constraints by their geometry alone, so that the branches do not depend
 // on the order in which the user listed the constraints.
 bool geometricLess(const Angle& a, const Angle& b) {
@@ -238,6 +263,7 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
   }
   if (n == 2 && n_par == 2) return twoParallels(ctx, ang[0], ang[1], out);
   if (n == 2 && n_par == 0) return twoAngles(ctx, ang[0], ang[1], out);
+  if (n_par >= 2) return determinedRotation(ctx, ang, n, out);
   if (n == 3) return threeAngles(ctx, ang[0], ang[1], ang[2], out);
   return MatchResult::kNoMatch;
 }
