@@ -11,7 +11,8 @@
 namespace relpos {
 namespace {
 
-using nlohmann::json;
+// ordered_json: fields come out in the order of SPEC.md §2.
+using json = nlohmann::ordered_json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 

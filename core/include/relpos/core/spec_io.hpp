@@ -40,7 +40,7 @@ struct ResultOptions {
 };
 
 // The result document of SPEC.md §2: nearest pose per branch, best, samples, etc.
-nlohmann::json resultToJson(const Problem& problem, const Solution& solution,
+nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
                             const ResultOptions& options);
 
 }  // namespace relpos
