@@ -121,9 +121,11 @@ int cmdRules(const Args& a, const Registry& reg) {
     std::cout << "\n";
   }
   std::cout << "combination rules:\n";
-  for (const auto& r : reg.rules())
+  for (const auto& r : reg.rules()) {
     std::cout << "  " << r.name << "  (" << relpos::toString(r.first) << " + "
               << relpos::toString(r.second) << ")  [" << r.origin << "]  " << r.citation << "\n";
+    for (const auto& c : r.cases) std::cout << "    " << c.name << "  " << c.citation << "\n";
+  }
   std::cout << "manifolds:\n";
   for (const auto& m : reg.manifolds())
     std::cout << "  " << m.name << "  [" << m.origin << "]  " << m.description << "\n";

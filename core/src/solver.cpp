@@ -81,6 +81,7 @@ restart:
   auto& list = translational ? set.translational : set.rotational;
   for (std::size_t i = 0; i < list.size(); ++i) {
     for (std::size_t j = i + 1; j < list.size(); ++j) {
+      if (set.wasTested(list[i], list[j])) continue;
       for (const auto& entry : st.registry.rulesFor(list[i].kind, list[j].kind)) {
         const RuleInfo& rule = st.registry.rules()[entry.rule];
         const Fundamental& a = entry.swapped ? list[j] : list[i];
@@ -88,7 +89,7 @@ restart:
         out.reset();
         rule.fn(a, b, st.tol, out);
         if (out.verdict == RuleVerdict::kNoChange) continue;
-        st.solution.noteRule(rule.name.c_str());
+        st.solution.noteRule(rule.firedName(out.fired).c_str());
         if (++steps > st.options.max_rule_steps) {
           setUnhandled(st, "the combination rules did not settle within " +
                                std::to_string(st.options.max_rule_steps) + " steps");
@@ -139,6 +140,7 @@ restart:
           case RuleVerdict::kNoChange: break;
         }
       }
+      set.markTested(list[i], list[j]);
     }
   }
   return SetOutcome::kCombined;

@@ -4,10 +4,15 @@
 
 namespace relpos::rules {
 void registerBuiltinRules(Registry& r) {
-  registerPointPointRules(r);
+  // Pinned-point rules first: they decide every pair that has a point-point coincidence.
   registerPinnedPointRules(r);
+  registerPointPointRules(r);
+  registerPointPointLineRules(r);
   registerPointLineRules(r);
+  registerPointPointPlaneRules(r);
+  registerPointLinePlaneRules(r);
   registerPointPlaneRules(r);
+  registerMixedRoleRules(r);
   registerAngleRules(r);
 }
 }  // namespace relpos::rules

@@ -1,7 +1,8 @@
 // A pinned mobile point d(P_m, P_f) = 0 with one more translational constraint. With P pinned,
 // T = P_f − R P_m, so any constraint on another point Q becomes a condition on the rotation of
-// u = Q_m − P_m alone: an angle (or two). These generalise the p = 0 rows of PMF App. IV
-// Tables I, II, V, VI, VIII and IX (derived from the geometry; the tables list special cases).
+// u = Q_m − P_m alone: an angle, two angles, or two pins. These generalise the p = 0 rows of PMF
+// App. IV Tables I, II, V, VI, VIII and IX (derived from the geometry; the tables list special
+// cases).
 #include <cmath>
 
 #include "relpos/rules/builtin.hpp"
@@ -11,36 +12,43 @@ namespace relpos::rules {
 namespace {
 using namespace detail;
 
+// Case indices: 0 and 1 in every family; 2 is the angle (pp0+pp, pp0+pplane) or the cone (pp0+pl).
+enum Case { kIncompatible = 0, kImplied = 1, kAngle = 2, kCone = 2, kPoints = 3 };
+
 bool pinned(const Fundamental& f, const Tolerance& tol) {
   return f.kind == FundamentalKind::kPointPoint && tol.zeroLength(f.value());
 }
 
-void redundantOrIncompatible(bool holds, RuleOutput& out, const char* why) {
-  if (holds) out.verdict = RuleVerdict::kRedundantSecond;
-  else out.incompatible(why);
+const char* kOutOfReach = "with one point pinned, the other constraint is out of reach";
+const char* kSamePoint = "a pinned point that violates another constraint on the same point";
+
+// The other constraint holds (drop it) or cannot hold.
+void impliedOrIncompatible(bool holds, RuleOutput& out, bool drop_first = false) {
+  if (!holds) return out.fire(kIncompatible).incompatible(kSamePoint);
+  out.fire(kImplied);
+  if (drop_first) out.redundantFirst();
+  else out.redundantSecond();
 }
 
-// Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(cos)} after range checks.
+// Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(num / den)}.
 void pinAngle(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
               double den, const Tolerance& tol, RuleOutput& out) {
   double alpha;
   if (!acosChecked(num, den, tol.length, &alpha))
-    return out.incompatible("with one point pinned, the other constraint is out of reach");
-  two(out, pin, Fundamental::angle(u_m, w_f, alpha, 0));
+    return out.fire(kIncompatible).incompatible(kOutOfReach);
+  two(out.fire(kAngle), pin, Fundamental::angle(u_m, w_f, alpha, 0));
 }
 
 // Two cones: the angle between a mobile vector and a fixed one is asin(s) or π − asin(s).
 void pinSinCone(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
                 double den, const Tolerance& tol, RuleOutput& out) {
-  if (num > den + tol.length)
-    return out.incompatible("with one point pinned, the other constraint is out of reach");
+  if (num > den + tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
   const double a = std::asin(std::min(1.0, num / den));
+  out.fire(kCone);
   if (std::abs(a - kPi / 2) <= tol.angle) return two(out, pin, Fundamental::angle(u_m, w_f, kPi / 2, 0));
   two(out, pin, Fundamental::angle(u_m, w_f, a, 0));
   two(out, pin, Fundamental::angle(u_m, w_f, kPi - a, 0));
 }
-
-const char* kSamePoint = "a pinned point that violates another constraint on the same point";
 
 void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                           RuleOutput& out) {
@@ -52,12 +60,8 @@ void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tole
   const Vector3d u = o.p - pin.p, w = o.q - pin.q;
   const double nu = u.norm(), nw = w.norm(), q = o.value();
   // |R u − w| = q  <=>  R u · w = (|u|² + |w|² − q²) / 2.
-  if (nu <= tol.length || nw <= tol.length) {
-    redundantOrIncompatible(tol.equalLength(std::max(nu, nw), q), out, kSamePoint);
-    if (out.verdict == RuleVerdict::kRedundantSecond && !a_pin)
-      out.verdict = RuleVerdict::kRedundantFirst;
-    return;
-  }
+  if (nu <= tol.length || nw <= tol.length)
+    return impliedOrIncompatible(tol.equalLength(std::max(nu, nw), q), out, !a_pin);
   pinAngle(pin, u / nu, w / nw, 0.5 * (nu * nu + nw * nw - q * q), nu * nw, tol, out);
 }
 
@@ -70,17 +74,22 @@ void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tol
     const Vector3d u = b.p - pin.p;
     const Vector3d e = (pin.q - b.q) - (pin.q - b.q).dot(b.d) * b.d;
     const double nu = u.norm();
-    if (nu <= tol.length)
-      return redundantOrIncompatible(tol.equalLength(e.norm(), q), out, kSamePoint);
-    if (e.norm() > tol.length) return;  // the pin is off the line: no single-angle rule
-    return pinSinCone(pin, u / nu, b.d, q, nu, tol, out);
+    if (nu <= tol.length) return impliedOrIncompatible(tol.equalLength(e.norm(), q), out);
+    if (e.norm() <= tol.length) return pinSinCone(pin, u / nu, b.d, q, nu, tol, out);
+    if (!tol.zeroLength(q)) return;  // Q on a circle: no single-angle rule
+    // Q on the line at |u| from the pin (Table II, row "d_b < d_a, p = q = 0"): one or two pins.
+    Vector3d x[2];
+    const int n = lineSphere(b.q, b.d, pin.q, nu, tol, x);
+    if (n == 0) return out.fire(kIncompatible).incompatible(kOutOfReach);
+    out.fire(kPoints);
+    for (int k = 0; k < n; ++k) two(out, pin, pinPoint(b, x[k]));
+    return;
   }
   // Fixed point Q_f at distance q from the mobile line (c_m, d_m): |(Rᵀw − (c_m − P_m)) × d_m| = q.
   const Vector3d w = b.p - pin.q;
   const Vector3d e = (b.q - pin.p) - (b.q - pin.p).dot(b.d) * b.d;
   const double nw = w.norm();
-  if (nw <= tol.length)
-    return redundantOrIncompatible(tol.equalLength(e.norm(), q), out, kSamePoint);
+  if (nw <= tol.length) return impliedOrIncompatible(tol.equalLength(e.norm(), q), out);
   if (e.norm() > tol.length) return;
   pinSinCone(pin, b.d, w / nw, q, nw, tol, out);
 }
@@ -92,13 +101,13 @@ void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const To
     // (P_f + R u − c)·n = 0  <=>  R u · n = (c − P_f)·n.
     const Vector3d u = b.p - pin.p;
     const double h = (b.q - pin.q).dot(b.d), nu = u.norm();
-    if (nu <= tol.length) return redundantOrIncompatible(tol.zeroLength(h), out, kSamePoint);
+    if (nu <= tol.length) return impliedOrIncompatible(tol.zeroLength(h), out);
     return pinAngle(pin, u / nu, b.d, h, nu, tol, out);
   }
   // Fixed Q_f on the mobile plane (c_m, n_m): (Q_f − P_f)·R n_m = (c_m − P_m)·n_m.
   const Vector3d w = b.p - pin.q;
   const double h = (b.q - pin.p).dot(b.d), nw = w.norm();
-  if (nw <= tol.length) return redundantOrIncompatible(tol.zeroLength(h), out, kSamePoint);
+  if (nw <= tol.length) return impliedOrIncompatible(tol.zeroLength(h), out);
   pinAngle(pin, b.d, w / nw, h, nw, tol, out);
 }
 
@@ -106,12 +115,22 @@ void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const To
 
 void registerPinnedPointRules(Registry& r) {
   using FK = FundamentalKind;
-  r.addRule({"pp0+pp/pinned-angle", "PMF App. IV Table I, rows with q = 0 (generalised)",
-             FK::kPointPoint, FK::kPointPoint, &pinnedWithPointPoint});
-  r.addRule({"pp0+pl/pinned-angle", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
-             FK::kPointPoint, FK::kPointLine, &pinnedWithPointLine});
-  r.addRule({"pp0+pplane/pinned-angle", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
-             FK::kPointPoint, FK::kPointPlane, &pinnedWithPointPlane});
+  addFamily(r, "pp0+pp", "PMF App. IV Table I, rows with q = 0 (generalised)", FK::kPointPoint,
+            FK::kPointPoint, &pinnedWithPointPoint,
+            {{"pp0+pp/incompatible", "PMF App. IV Table I, row 1 with q = 0"},
+             {"pp0+pp/implied", "PMF App. IV Table I, row 2 with q = 0"},
+             {"pp0+pp/angle", "PMF App. IV Table I, row 5 (generalised: law of cosines)"}});
+  addFamily(r, "pp0+pl", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
+            FK::kPointPoint, FK::kPointLine, &pinnedWithPointLine,
+            {{"pp0+pl/incompatible", "PMF App. IV Table II, row 1 with p = 0"},
+             {"pp0+pl/implied", "PMF App. IV Table II, row 2"},
+             {"pp0+pl/cone", "PMF App. IV Table II, row 4 (d_a > q, d_b = 0, p = 0)"},
+             {"pp0+pl/points", "PMF App. IV Table II, row 10 (d_b < d_a, p = q = 0)"}});
+  addFamily(r, "pp0+pplane", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
+            FK::kPointPoint, FK::kPointPlane, &pinnedWithPointPlane,
+            {{"pp0+pplane/incompatible", "PMF App. IV Table V, row 1 with p = 0"},
+             {"pp0+pplane/implied", "PMF App. IV Table V, row 2 with p = 0"},
+             {"pp0+pplane/angle", "PMF App. IV Table V, rows 5 and 6 (generalised)"}});
 }
 
 }  // namespace relpos::rules

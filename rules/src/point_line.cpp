@@ -1,6 +1,6 @@
-// PMF App. IV Table III: two point-line distances d(P_a, K_b) = p, d(P_a, L_b) = q on the same
-// point P_a (the worked example's "lines meet" rule, 003 §VI-A). Rows for different points
-// (Tables III–IV with d_a ≠ 0) come with the complete rule set.
+// PMF App. IV Tables III and IV: two point-line distances d(P_a, K_b) = p, d(Q_a, L_b) = q, both
+// points on object a. d_a = |P_a Q_a|; d_b = the distance between the lines; for non-parallel
+// lines P_b, Q_b are the feet of their common perpendicular.
 #include <cmath>
 
 #include "relpos/rules/builtin.hpp"
@@ -10,46 +10,55 @@ namespace relpos::rules {
 namespace {
 using namespace detail;
 
-// Points of line (c, d) at distance q from line (c2, d2) when the lines are skew or meet: the
-// distance from c + t d to the other line is sqrt(db² + t² sin²θ) measured from the common
-// perpendicular's foot (derived from the geometry: the table's k omits the 1/sinθ factor).
+enum Case {
+  kIncompatible,
+  kSameLine,
+  kParallelCylinders,
+  kLinesMeet,
+  kOnLineNearLine,
+  kSkewTangent,
+  kParallelSpan,
+  kCrossingSpan,
+  kNearOwnLine,
+  kCollinear,
+};
+
+const char* kNoPose = "two point-line distances that no pose satisfies (PMF App. IV Table III, row 1)";
+
+// Points of line (c, d) at distance q from the other line, which it crosses at angle θ with the
+// common perpendicular's foot `foot` and length db: |x(t) − L| = sqrt(db² + t² sin²θ). (Derived
+// from the geometry: the table's k omits the 1/sin θ.)
 void pointsOnLineAtDistance(const Fundamental& a, const Vector3d& foot, const Vector3d& d,
                             double sin_theta, double db, double q, const Tolerance& tol,
                             RuleOutput& out) {
-  if (q < db - tol.length)
-    return out.incompatible("a point on one line cannot reach the required distance from the "
-                            "other line (PMF App. IV Table III)");
+  if (q < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
+  out.fire(kOnLineNearLine);
   if (tol.equalLength(q, db)) return one(out, pinPoint(a, foot));
   const double t = std::sqrt(q * q - db * db) / sin_theta;
   one(out, pinPoint(a, foot + t * d));
   one(out, pinPoint(a, foot - t * d));
 }
 
-void samePointTwoLines(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                       RuleOutput& out) {
-  if (a.point_side != b.point_side || (a.p - b.p).norm() > tol.length) return;
+void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+               RuleOutput& out) {
   const double p = a.value(), q = b.value();
-  const Vector3d cross = a.d.cross(b.d);
-  const double sin_theta = cross.norm();
+  const double sin_theta = a.d.cross(b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
     // Parallel lines: coaxial cylinders (redundant or incompatible) or up to two lines.
-    Vector3d w = b.q - a.q;
-    Vector3d w_perp = w - w.dot(a.d) * a.d;
+    const Vector3d w = b.q - a.q;
+    const Vector3d w_perp = w - w.dot(a.d) * a.d;
     const double db = w_perp.norm();
     if (db <= tol.length) {
-      if (tol.equalLength(p, q)) {
-        out.verdict = RuleVerdict::kRedundantSecond;
-        return;
-      }
-      return out.incompatible("one point at two different distances from the same line");
+      if (tol.equalLength(p, q)) return out.fire(kSameLine).redundantSecond();
+      return out.fire(kIncompatible).incompatible("one point at two distances from one line");
     }
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
-      return out.incompatible("one point at distances from two parallel lines that cannot be met "
-                              "together (PMF App. IV Table III, row 1)");
+      return out.fire(kIncompatible).incompatible(kNoPose);
     const Vector3d u_b = w_perp / db;
     const Vector3d v_b = a.d.cross(u_b);
     const double k1 = (db * db + p * p - q * q) / (2 * db);
     const double k2sq = p * p - k1 * k1;
+    out.fire(kParallelCylinders);
     if (k2sq <= 2 * tol.length * std::max(1.0, p)) return one(out, onLine(a, a.q + k1 * u_b, a.d, 0));
     const double k2 = std::sqrt(k2sq);
     one(out, onLine(a, a.q + k1 * u_b + k2 * v_b, a.d, 0));
@@ -61,21 +70,100 @@ void samePointTwoLines(const Fundamental& a, const Fundamental& b, const Toleran
   const double db = (f2 - f1).norm();
   const bool p0 = tol.zeroLength(p), q0 = tol.zeroLength(q);
   if (p0 && q0) {
-    if (db <= tol.length) return one(out, pinPoint(a, 0.5 * (f1 + f2)));  // K ∩ L
-    return out.incompatible("a point on two lines that do not meet (PMF App. IV Table III)");
+    if (db <= tol.length) return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
+    return out.fire(kIncompatible).incompatible("a point on two lines that do not meet");
   }
   if (p0) return pointsOnLineAtDistance(a, f1, a.d, sin_theta, db, q, tol, out);
   if (q0) return pointsOnLineAtDistance(a, f2, b.d, sin_theta, db, p, tol, out);
-  if (db > p + q + tol.length)
-    return out.incompatible("a point at distances from two lines that are too far apart");
-  if (tol.equalLength(db, p + q)) return one(out, pinPoint(a, f1 + (p / db) * (f2 - f1)));
+  if (db > p + q + tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
+  if (db > tol.length && tol.equalLength(db, p + q))
+    return one(out.fire(kSkewTangent), pinPoint(a, f1 + (p / db) * (f2 - f1)));
+}
+
+void differentPoints(const Fundamental& a, const Fundamental& b, double da,
+                     const Tolerance& tol, RuleOutput& out) {
+  const double p = a.value(), q = b.value();
+  const Vector3d u_a = (b.p - a.p) / da;
+  const Side side = a.point_side;
+  const double sin_theta = a.d.cross(b.d).norm();
+  if (tol.parallelUnit(sin_theta)) {
+    const Vector3d w = b.q - a.q;
+    const Vector3d w_perp = w - w.dot(a.d) * a.d;  // from K_b to L_b, ⊥ both
+    const double db = w_perp.norm();
+    const Vector3d u_b = db > tol.length ? Vector3d(w_perp / db) : anyPerpendicular(a.d);
+    if (tol.zeroLength(p) && tol.zeroLength(q)) {
+      // Table IV rows 2 and 3: P on K, Q on L: P_aQ_a has the component d_b along u_b and the
+      // rest along the lines: one or two directions v = (d_b u_b ± k d) / d_a.
+      if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
+      out.fire(kParallelSpan);
+      if (tol.equalLength(da, db)) return two(out, a, angleAB(side, u_a, u_b, 0.0));
+      const double k = std::sqrt(da * da - db * db);
+      two(out, a, angleAB(side, u_a, (db * u_b + k * a.d) / da, 0.0));
+      two(out, a, angleAB(side, u_a, (db * u_b - k * a.d) / da, 0.0));
+      return;
+    }
+    if (db <= tol.length && (tol.zeroLength(p) != tol.zeroLength(q))) {
+      // Table IV row 1: one point on the line, the other at a distance from it: the span makes
+      // the angle asin(r / d_a) with the line (either way along it).
+      const bool p_on = tol.zeroLength(p);
+      const Fundamental& on = p_on ? a : b;
+      const double r = p_on ? q : p;
+      if (r > da + tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
+      const double alpha = std::asin(std::min(1.0, r / da));
+      out.fire(kNearOwnLine);
+      if (std::abs(alpha - kPi / 2) <= tol.angle) return two(out, on, angleAB(side, u_a, a.d, kPi / 2));
+      two(out, on, angleAB(side, u_a, a.d, alpha));
+      two(out, on, angleAB(side, u_a, a.d, kPi - alpha));
+      return;
+    }
+    // Table III, collinear rows: all four points on one perpendicular of the lines.
+    if (db > tol.length && tol.equalLength(da + db, std::abs(p - q)) && !tol.zeroLength(p - q)) {
+      const double s = p > q ? 1.0 : -1.0;
+      return two(out.fire(kCollinear), onLine(a, a.q + s * p * u_b, a.d, 0),
+                 onLine(b, b.q + s * q * u_b, a.d, 0));
+    }
+    if (db > tol.length && tol.equalLength(db - da, p + q))
+      return two(out.fire(kCollinear), onLine(a, a.q + p * u_b, a.d, 0),
+                 onLine(b, b.q - q * u_b, a.d, 0));
+    return;
+  }
+  if (!tol.zeroLength(p) || !tol.zeroLength(q)) return;
+  // Table IV row 4, generalised to skew lines: P on K and Q on L need the span's component along
+  // n = K × L to equal the lines' offset h. With that rotation, Q on L follows from Q on the plane
+  // through L with normal n × L (derived from the geometry), whose intersection with the shifted K
+  // is one point for every rotation.
+  Vector3d f1, f2;
+  closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
+  const Vector3d n = a.d.cross(b.d) / sin_theta;
+  const double h = (f2 - f1).dot(n);
+  double alpha;
+  if (!acosChecked(h, da, tol.length, &alpha)) return out.fire(kIncompatible).incompatible(kNoPose);
+  three(out.fire(kCrossingSpan), a, onPlane(b, b.q, n.cross(b.d)), angleAB(side, u_a, n, alpha));
+}
+
+void twoPointLine(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                  RuleOutput& out) {
+  if (!sameRoles(a, b)) return;  // mixed roles: Table VIII
+  const double da = (b.p - a.p).norm();
+  if (da <= tol.length) return samePoint(a, b, tol, out);
+  differentPoints(a, b, da, tol, out);
 }
 
 }  // namespace
 
 void registerPointLineRules(Registry& r) {
-  r.addRule({"pl+pl/same-point", "PMF App. IV Table III (d_a = 0 rows; lines meet: 003 §VI-A)",
-             FundamentalKind::kPointLine, FundamentalKind::kPointLine, &samePointTwoLines});
+  addFamily(r, "pl+pl", "PMF App. IV Tables III and IV", FundamentalKind::kPointLine,
+            FundamentalKind::kPointLine, &twoPointLine,
+            {{"pl+pl/incompatible", "PMF App. IV Table III, row 1"},
+             {"pl+pl/same-line", "PMF App. IV Table III, row 2"},
+             {"pl+pl/parallel-cylinders", "PMF App. IV Table III, rows 4, 5 and 6 (d_a = 0)"},
+             {"pl+pl/lines-meet", "PMF App. IV Table III, last row (003 §VI-A)"},
+             {"pl+pl/on-line-near-line", "PMF App. IV Table III, row 9 (p = 0, K ∦ L)"},
+             {"pl+pl/skew-tangent", "PMF App. IV Table III, row 7 (d_a = 0)"},
+             {"pl+pl/parallel-span", "PMF App. IV Table IV, rows 2 and 3"},
+             {"pl+pl/crossing-span", "PMF App. IV Table IV, row 4 (generalised to skew lines)"},
+             {"pl+pl/near-own-line", "PMF App. IV Table IV, row 1"},
+             {"pl+pl/collinear", "PMF App. IV Table III, rows 3, 4 and 8 (d_a ≠ 0)"}});
 }
 
 }  // namespace relpos::rules

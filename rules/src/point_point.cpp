@@ -1,5 +1,6 @@
 // PMF App. IV Table I: two point-point distance constraints d(P_a, P_b) = p, d(Q_a, Q_b) = q.
-// a = the mobile object, b = the fixed one; d_a = |P_a Q_a|, d_b = |P_b Q_b|.
+// a = the mobile object, b = the fixed one; d_a = |P_a Q_a|, d_b = |P_b Q_b|, u_b = P_bQ_b / d_b.
+// (The rows with p = 0 or q = 0 and d_a ≠ 0 are the pinned-point rules, pinned_point.cpp.)
 #include <cmath>
 
 #include "relpos/rules/builtin.hpp"
@@ -9,52 +10,57 @@ namespace relpos::rules {
 namespace {
 using namespace detail;
 
+enum Case { kIncompatible, kSamePoints, kTangentSpheres, kCircle, kCollinear, kEqualSpan };
+
 void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                    RuleOutput& out) {
   const double p = a.value(), q = b.value();
   const double da = (b.p - a.p).norm(), db = (b.q - a.q).norm();
   const double eps = tol.length;
-  // Row 1: incompatible.
   if (da + db < std::abs(p - q) - eps || std::abs(db - da) > p + q + eps)
-    return out.incompatible("two point-point distances that no pose satisfies (PMF App. IV "
-                            "Table I, row 1)");
+    return out.fire(kIncompatible).incompatible(
+        "two point-point distances that no pose satisfies (PMF App. IV Table I, row 1)");
   const bool za = da <= eps, zb = db <= eps;
-  // Row 2: the same two points twice.
-  if (za && zb) {
-    out.verdict = RuleVerdict::kRedundantSecond;
-    return;
-  }
-  const Vector3d u_b = zb ? Vector3d::Zero() : Vector3d((b.q - a.q) / db);
+  if (za && zb) return out.fire(kSamePoints).redundantSecond();  // p = q, else row 1
+  if (zb) return;  // two points about one centre: no single-constraint rule
+  const Vector3d u_b = (b.q - a.q) / db;
   if (za) {
-    // One mobile point at p from P_b and q from Q_b: a point (tangent spheres) or a circle.
-    if (tol.zeroLength(p) || tol.zeroLength(q)) return;  // pinned-point rules decide
-    if (tol.equalLength(db, p + q)) return one(out, pinPoint(a, a.q + p * u_b));
+    // One mobile point at p from P_b and q from Q_b.
+    if (tol.zeroLength(p) || tol.zeroLength(q)) return;  // pinned-point rules
+    if (tol.equalLength(db, p + q))
+      return one(out.fire(kTangentSpheres), pinPoint(a, a.q + p * u_b));
     if (tol.equalLength(db, std::abs(p - q)))
-      return one(out, pinPoint(a, a.q + (p > q ? p : -p) * u_b));
+      return one(out.fire(kTangentSpheres), pinPoint(a, a.q + (p > q ? p : -p) * u_b));
+    // Row 4: the circle where the spheres meet, in the plane ⊥ u_b at k from P_b.
     const double k = (db * db + p * p - q * q) / (2 * db);
     const double r = std::sqrt(std::max(0.0, p * p - k * k));
-    return two(out, onLine(a, a.q, u_b, r), onPlane(a, a.q + k * u_b, u_b));
+    return two(out.fire(kCircle), onLine(a, a.q, u_b, r), onPlane(a, a.q + k * u_b, u_b));
   }
-  if (zb) return;
-  // Row 7: two pinned points at equal spans: the rotation keeps P_aQ_a along P_bQ_b.
   if (tol.zeroLength(p) && tol.zeroLength(q)) {
+    // Row 7: both points pinned, equal spans: P pinned and P_aQ_a kept along P_bQ_b.
     const Vector3d u_a = (b.p - a.p) / da;
-    return two(out, a, Fundamental::angle(u_a, u_b, 0.0, 0));
+    return two(out.fire(kEqualSpan), a, Fundamental::angle(u_a, u_b, 0.0, 0));
   }
-  // Rows 3 and 6: the four points on one line.
+  // Rows 3 and 6: the extreme configurations put all four points on one line.
   if (tol.equalLength(da + db, std::abs(p - q)) && !tol.zeroLength(p - q)) {
     const double s = p > q ? 1.0 : -1.0;
-    return two(out, pinPoint(a, a.q + s * p * u_b), pinPoint(b, b.q + s * q * u_b));
+    return two(out.fire(kCollinear), pinPoint(a, a.q + s * p * u_b), pinPoint(b, b.q + s * q * u_b));
   }
-  if (tol.equalLength(db - da, p + q) && !tol.zeroLength(p + q))
-    return two(out, pinPoint(a, a.q + p * u_b), pinPoint(b, b.q - q * u_b));
+  if (tol.equalLength(db - da, p + q))
+    return two(out.fire(kCollinear), pinPoint(a, a.q + p * u_b), pinPoint(b, b.q - q * u_b));
 }
 
 }  // namespace
 
 void registerPointPointRules(Registry& r) {
-  r.addRule({"pp+pp/two-distances", "PMF App. IV Table I (all rows; row 4 = circle)",
-             FundamentalKind::kPointPoint, FundamentalKind::kPointPoint, &twoPointPoint});
+  addFamily(r, "pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint,
+            FundamentalKind::kPointPoint, &twoPointPoint,
+            {{"pp+pp/incompatible", "PMF App. IV Table I, row 1"},
+             {"pp+pp/same-points", "PMF App. IV Table I, row 2"},
+             {"pp+pp/tangent-spheres", "PMF App. IV Table I, rows 3 and 5 (d_a = 0)"},
+             {"pp+pp/circle", "PMF App. IV Table I, row 4"},
+             {"pp+pp/collinear", "PMF App. IV Table I, rows 3 and 6 (d_a ≠ 0)"},
+             {"pp+pp/equal-span", "PMF App. IV Table I, row 7"}});
 }
 
 }  // namespace relpos::rules

@@ -1,7 +1,9 @@
 #pragma once
-// Helpers shared by the rule families: building results on the same sides as the inputs.
+// Helpers shared by the rule families: building results on the same sides as the inputs, and the
+// small geometric facts several PMF tables use.
 #include <cmath>
 
+#include "relpos/core/registry.hpp"
 #include "relpos/core/rule.hpp"
 
 namespace relpos::rules::detail {
@@ -12,6 +14,11 @@ using Alt = FixedVector<Fundamental, kMaxRuleOutputs>;
 inline Fundamental pinPoint(const Fundamental& a, const Vector3d& x) {
   return a.point_side == Side::kMobile ? Fundamental::pointPoint(a.p, x, 0.0, a.sources)
                                        : Fundamental::pointPoint(x, a.p, 0.0, a.sources);
+}
+// d(point p of a's side, X) = 0: a pin for another point of the same side as a.
+inline Fundamental pinPointAt(const Fundamental& a, const Vector3d& p, const Vector3d& x) {
+  return a.point_side == Side::kMobile ? Fundamental::pointPoint(p, x, 0.0, a.sources)
+                                       : Fundamental::pointPoint(x, p, 0.0, a.sources);
 }
 inline Fundamental onLine(const Fundamental& a, const Vector3d& c, const Vector3d& d, double v) {
   return Fundamental::pointLine(a.point_side, a.p, c, d, v, a.sources);
@@ -31,6 +38,13 @@ inline void two(RuleOutput& out, const Fundamental& f, const Fundamental& g) {
   a.push_back(f);
   a.push_back(g);
 }
+inline void three(RuleOutput& out, const Fundamental& f, const Fundamental& g,
+                  const Fundamental& h) {
+  Alt& a = out.addAlternative();
+  a.push_back(f);
+  a.push_back(g);
+  a.push_back(h);
+}
 
 // acos of a ratio that must lie in [-1, 1] up to tolerance; false when it does not.
 inline bool acosChecked(double num, double den, double tol, double* angle) {
@@ -38,6 +52,41 @@ inline bool acosChecked(double num, double den, double tol, double* angle) {
   if (std::abs(num) > den + tol) return false;
   *angle = std::acos(c > 1 ? 1 : (c < -1 ? -1 : c));
   return true;
+}
+
+// Both constraints have their points on the same object (PMF's "a"), the other elements on "b".
+inline bool sameRoles(const Fundamental& a, const Fundamental& b) {
+  return a.point_side == b.point_side;
+}
+
+// Up to two points of line (c, d) at distance r from point x: c' ± k d with c' the foot of x.
+// Returns how many (0, 1, 2); tangency within the length tolerance gives 1.
+inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, double r,
+                      const Tolerance& tol, Vector3d out[2]) {
+  const Vector3d foot = projectOnLine(x, c, d);
+  const double h = (x - foot).norm();
+  if (h > r + tol.length) return 0;
+  if (std::abs(h - r) <= tol.length) {
+    out[0] = foot;
+    return 1;
+  }
+  const double k = std::sqrt(r * r - h * h);
+  out[0] = foot + k * d;
+  out[1] = foot - k * d;
+  return 2;
+}
+
+// Registers a rule family with its cases.
+inline void addFamily(Registry& r, const char* name, const char* citation, FundamentalKind first,
+                      FundamentalKind second, RuleFn fn, std::vector<RuleCase> cases) {
+  RuleInfo info;
+  info.name = name;
+  info.citation = citation;
+  info.first = first;
+  info.second = second;
+  info.fn = fn;
+  info.cases = std::move(cases);
+  r.addRule(std::move(info));
 }
 
 }  // namespace relpos::rules::detail

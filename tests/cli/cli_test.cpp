@@ -125,7 +125,7 @@ TEST(Cli, UsageErrors) {
 TEST(Cli, RulesListsTypesRulesAndManifolds) {
   CmdResult r = run("rules");
   ASSERT_EQ(r.code, 0);
-  for (const char* s : {"distance", "tangent", "pp+pp/two-distances", "PMF App. IV Table VII",
+  for (const char* s : {"distance", "tangent", "pp+pp/circle", "PMF App. IV Table VII",
                         "rotation/TwoAngle", "translation/Ellipse", "built-in"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s;
 }

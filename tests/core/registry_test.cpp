@@ -1,3 +1,5 @@
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include "relpos/rules/builtin.hpp"
@@ -12,8 +14,11 @@ TEST(Registry, DuplicateNamesAreRejectedUnlessReplacing) {
   Registry r;
   registerBuiltins(r);
   EXPECT_THROW(registerBuiltins(r), std::invalid_argument);
-  RuleInfo rule{"pp+pp/two-distances", "test", FundamentalKind::kPointPoint,
-                FundamentalKind::kPointPoint, &noRule, "test"};
+  RuleInfo rule;
+  rule.name = "pp+pp";
+  rule.citation = "test";
+  rule.first = rule.second = FundamentalKind::kPointPoint;
+  rule.fn = &noRule;
   EXPECT_THROW(r.addRule(rule), std::invalid_argument);
   EXPECT_NO_THROW(r.addRule(rule, /*replace=*/true));
   EXPECT_EQ(r.rules().size(), builtinRegistry().rules().size());
@@ -36,10 +41,16 @@ TEST(Registry, DispatchTableHasBothOrders) {
   EXPECT_EQ(pp_pl[0].rule, pl_pp[0].rule);
 }
 
-TEST(Registry, EveryRuleHasANameAndACitation) {
+TEST(Registry, EveryRuleCaseHasAUniqueNameAndACitation) {
+  std::set<std::string> names;
   for (const auto& rule : builtinRegistry().rules()) {
     EXPECT_FALSE(rule.name.empty());
     EXPECT_NE(rule.citation.find("PMF"), std::string::npos) << rule.name;
+    for (const auto& c : rule.cases) {
+      EXPECT_EQ(c.name.rfind(rule.name + "/", 0), 0u) << c.name << " is not in family " << rule.name;
+      EXPECT_NE(c.citation.find("PMF"), std::string::npos) << c.name;
+      EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
+    }
   }
 }
 

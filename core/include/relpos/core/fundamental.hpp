@@ -37,6 +37,7 @@ struct Fundamental {
   Vector3d d = Vector3d::UnitZ();
   double lo = 0.0, hi = 0.0;
   SourceMask sources = 0;
+  std::uint16_t id = 0;  // identity within a constraint set (assigned by ConstraintSet::add)
 
   bool exact() const { return lo == hi; }
   double value() const { return lo; }
@@ -58,18 +59,35 @@ inline constexpr std::size_t kMaxFundamentals = 24;
 struct ConstraintSet {
   FixedVector<Fundamental, kMaxFundamentals> translational;  // C_T
   FixedVector<Fundamental, kMaxFundamentals> rotational;     // C_R
+  // Pairs (by id) already tested without any rule applying: not tested again, also not after a
+  // branch (PMF 003 §VII-A). Best effort: when full, pairs are simply re-tested.
+  FixedVector<std::uint32_t, 96> tested;
   SourceMask dropped_redundant = 0;                          // sources of constraints dropped
+  std::uint16_t next_id = 1;
   bool overflow = false;                                     // a push_back was refused
   void clear() {
     translational.clear();
     rotational.clear();
+    tested.clear();
     dropped_redundant = 0;
+    next_id = 1;
     overflow = false;
   }
-  void add(const Fundamental& f) {
+  void add(Fundamental f) {
+    f.id = next_id++;
     bool ok = f.translational() ? translational.push_back(f) : rotational.push_back(f);
     overflow = overflow || !ok;
   }
+  static std::uint32_t pairKey(const Fundamental& a, const Fundamental& b) {
+    return a.id < b.id ? (std::uint32_t{a.id} << 16 | b.id) : (std::uint32_t{b.id} << 16 | a.id);
+  }
+  bool wasTested(const Fundamental& a, const Fundamental& b) const {
+    const std::uint32_t k = pairKey(a, b);
+    for (std::uint32_t t : tested)
+      if (t == k) return true;
+    return false;
+  }
+  void markTested(const Fundamental& a, const Fundamental& b) { tested.push_back(pairKey(a, b)); }
   SourceMask usedSources() const;
 };
 

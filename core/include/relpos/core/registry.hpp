@@ -51,12 +51,24 @@ struct ConstraintType {
 };
 
 // --- rules -------------------------------------------------------------------------------------
+// One case of a rule: a row (or a group of rows) of a PMF table. The rule function tells which
+// case applied (RuleOutput::fire), so rule coverage is counted per case.
+struct RuleCase {
+  std::string name;      // stable, e.g. "pp+pp/circle"
+  std::string citation;  // e.g. "PMF App. IV Table I, row 4"
+};
+
 struct RuleInfo {
-  std::string name;      // stable, e.g. "pp+pp/equal-span"
-  std::string citation;  // e.g. "PMF App. IV Table I, row 7"
+  std::string name;      // the family, e.g. "pp+pp" (also the case name when there are no cases)
+  std::string citation;  // e.g. "PMF App. IV Table I"
   FundamentalKind first, second;
   RuleFn fn = nullptr;
+  std::vector<RuleCase> cases;
   std::string origin = "built-in";
+  // The name recorded when this rule fires with case `fired` (-1: the rule's own name).
+  const std::string& firedName(int fired) const {
+    return fired >= 0 && fired < static_cast<int>(cases.size()) ? cases[fired].name : name;
+  }
 };
 
 // --- manifold matchers -------------------------------------------------------------------------

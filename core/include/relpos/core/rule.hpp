@@ -19,23 +19,32 @@ enum class RuleVerdict : unsigned char {
   kReplace,
 };
 
-inline constexpr std::size_t kMaxRuleAlternatives = 2;
+inline constexpr std::size_t kMaxRuleAlternatives = 4;
 inline constexpr std::size_t kMaxRuleOutputs = 4;
 
 struct RuleOutput {
   RuleVerdict verdict = RuleVerdict::kNoChange;
   const char* reason = "";  // static text, for kIncompatible
+  int fired = -1;           // which case of the rule applied (index into RuleInfo::cases)
   FixedVector<FixedVector<Fundamental, kMaxRuleOutputs>, kMaxRuleAlternatives> alternatives;
 
   void reset() {
     verdict = RuleVerdict::kNoChange;
     reason = "";
+    fired = -1;
     alternatives.clear();
+  }
+  // Records which case of the rule applies; returns *this for chaining.
+  RuleOutput& fire(int rule_case) {
+    fired = rule_case;
+    return *this;
   }
   void incompatible(const char* why) {
     verdict = RuleVerdict::kIncompatible;
     reason = why;
   }
+  void redundantFirst() { verdict = RuleVerdict::kRedundantFirst; }
+  void redundantSecond() { verdict = RuleVerdict::kRedundantSecond; }
   // Starts a new alternative and returns it.
   FixedVector<Fundamental, kMaxRuleOutputs>& addAlternative() {
     verdict = RuleVerdict::kReplace;

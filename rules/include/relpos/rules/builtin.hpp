@@ -5,11 +5,15 @@ namespace relpos::rules {
 // Constraint types of SPEC.md §1 with their decomposition (PMF Table I).
 void registerBuiltinConstraintTypes(Registry& registry);
 // Combination rules, one function per PMF Appendix IV family.
-void registerPointPointRules(Registry& registry);   // App. IV Table I
-void registerPointLineRules(Registry& registry);    // App. IV Table III (same mobile point)
-void registerPointPlaneRules(Registry& registry);   // App. IV Table VII
-void registerPinnedPointRules(Registry& registry);  // App. IV rows with p = 0, generalised
-void registerAngleRules(Registry& registry);        // App. IV Table X
+void registerPinnedPointRules(Registry& registry);      // App. IV rows with p = 0, generalised
+void registerPointPointRules(Registry& registry);       // App. IV Table I
+void registerPointPointLineRules(Registry& registry);   // App. IV Table II
+void registerPointLineRules(Registry& registry);        // App. IV Tables III and IV
+void registerPointPointPlaneRules(Registry& registry);  // App. IV Table V
+void registerPointLinePlaneRules(Registry& registry);   // App. IV Table VI
+void registerPointPlaneRules(Registry& registry);       // App. IV Table VII
+void registerMixedRoleRules(Registry& registry);        // App. IV Tables VIII and IX
+void registerAngleRules(Registry& registry);            // App. IV Table X
 // Everything above.
 void registerBuiltinRules(Registry& registry);
 }  // namespace relpos::rules
