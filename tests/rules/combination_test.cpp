@@ -48,11 +48,48 @@ std::vector<Fundamental> satisfiedFundamentals(const KnownProblem& kp) {
   return out;
 }
 
+// Branches of a constraint set on its own (synthesis only), for sampling a rule's output.
+bool synthesise(const std::vector<Fundamental>& fs, const Tolerance& tol, Solution& out) {
+  ConstraintSet set;
+  set.clear();
+  for (const Fundamental& f : fs) set.add(f);
+  out.clear();
+  for (const MatcherInfo& m : builtinRegistry().matchers()) {
+    MatchContext ctx{set, tol, out};
+    MatchResult r = m.fn(ctx);
+    if (r == MatchResult::kMatched) return true;
+    if (r != MatchResult::kNoMatch) return false;
+  }
+  return false;
+}
+
+// Every sampled pose of the synthesised output satisfies both inputs; returns false when the
+// output alone cannot be synthesised (then nothing is checked).
+bool outputImpliesInputs(const std::vector<Fundamental>& output, const Fundamental& a,
+                         const Fundamental& b, const Tolerance& tol, std::mt19937_64& rng,
+                         std::string* bad) {
+  Solution s;
+  if (!synthesise(output, tol, s)) return false;
+  for (const Branch& br : s.branches)
+    for (int k = 0; k < 8; ++k) {
+      Isometry3d X = br.manifold->pose(sampleParams(*br.manifold, rng));
+      const double ra = fundamentalResidual(a, X), rb = fundamentalResidual(b, X);
+      if (ra > 1e-6 || rb > 1e-6) {
+        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " +
+               std::to_string(ra) + ", " + std::to_string(rb);
+        return true;
+      }
+    }
+  return true;
+}
+
 TEST(RuleProperties, RulesKeepTheKnownSolution) {
   const Registry& reg = builtinRegistry();
   Rng rng(4242);
   const auto& kinds = singleKinds();
   std::map<std::string, int> fired;
+  std::mt19937_64 sampler(17);
+  int checked_converse = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const bool grid = trial % 2;
     KnownProblem kp = emptyKnownProblem(rng, grid);
@@ -81,7 +118,21 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
             EXPECT_TRUE(rule.cases.empty() || out.fired >= 0) << rule.name << " fired no case";
           }
           ASSERT_NE(out.verdict, RuleVerdict::kIncompatible) << out.reason;
+          std::string bad;
+          if (out.verdict == RuleVerdict::kRedundantFirst ||
+              out.verdict == RuleVerdict::kRedundantSecond) {
+            // The kept constraint alone implies the dropped one.
+            const Fundamental& kept = out.verdict == RuleVerdict::kRedundantFirst ? b : a;
+            if (outputImpliesInputs({kept}, a, b, tol, sampler, &bad)) ++checked_converse;
+            EXPECT_TRUE(bad.empty()) << "dropped a constraint its partner does not imply: " << bad;
+            continue;
+          }
           if (out.verdict != RuleVerdict::kReplace) continue;
+          for (const auto& alt : out.alternatives) {
+            std::vector<Fundamental> fs(alt.begin(), alt.end());
+            if (outputImpliesInputs(fs, a, b, tol, sampler, &bad)) ++checked_converse;
+            EXPECT_TRUE(bad.empty()) << "a replacement set admits a pose violating the pair: " << bad;
+          }
           bool some = false;
           for (const auto& alt : out.alternatives) {
             bool all = true;
@@ -94,6 +145,8 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
   }
   for (const std::string& name : allCaseNames())
     if (fired[name] == 0) std::printf("[property test] never fired: %s\n", name.c_str());
+  std::printf("[property test] output-implies-input checked on %d rule outputs\n", checked_converse);
+  EXPECT_GT(checked_converse, 500);
 }
 
 // The product's promise: every registered rule case fires on some bundled problem (data/rules has
