@@ -1,6 +1,7 @@
-// solve() on every bundled example (each single-constraint kind, the PMF worked example and the
-// two-constraint cases), into a reused Workspace and Solution as a control loop would call it;
-// and the nearest-pose query on the worked example.
+// solve() on every bundled example (each single-constraint kind, the PMF worked example, the
+// two-constraint cases, PMF's assembly task) and on data/bench (five constraints, 16 branches),
+// into a reused Workspace and Solution as a control loop would call it; and the nearest-pose
+// query on the worked example.
 //   build/bench/relpos_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -55,8 +56,9 @@ BENCHMARK(BM_NearestWorkedExample);
 
 int registerExamples() {
   std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(RELPOS_DATA_DIR "/examples"))
-    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  for (const char* dir : {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench"})
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".json") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   for (const auto& f : files)
     benchmark::RegisterBenchmark(("solve/" + std::filesystem::path(f).stem().string()).c_str(),

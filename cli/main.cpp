@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,7 @@ constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
 const char* kUsage =
     "usage:\n"
     "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
-    "  relpos rules\n"
+    "  relpos rules [--coverage DIR-or-SPEC...]\n"
     "  relpos table DIR-or-SPEC... [--repeat N]\n";
 
 struct UsageError : std::runtime_error {
@@ -37,6 +38,7 @@ struct UsageError : std::runtime_error {
 
 struct Args {
   std::vector<std::string> positional;
+  bool coverage = false;
   relpos::ResultOptions result;
   std::string out;
   int repeat = 200;
@@ -69,6 +71,7 @@ Args parseArgs(int argc, char** argv, int first) {
       if (v.empty() || *end || !(a.result.window >= 0) || !std::isfinite(a.result.window))
         throw UsageError("--window: expected a non-negative number, got '" + v + "'");
     } else if (s == "-o") a.out = value();
+    else if (s == "--coverage") a.coverage = true;
     else if (s.size() > 1 && s[0] == '-') throw UsageError("unknown option '" + s + "'");
     else a.positional.push_back(s);
   }
@@ -111,8 +114,51 @@ int cmdSolve(const Args& a, const Registry& reg) {
   return kExitOk;
 }
 
+std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
+
+// How often each rule case fired over a folder of specs, and which never fired.
+int cmdRuleCoverage(const Args& a, const Registry& reg) {
+  if (a.positional.empty()) throw UsageError("rules --coverage needs a folder or spec files");
+  std::map<std::string, int> count;
+  for (const auto& r : reg.rules()) {
+    if (r.cases.empty()) count[r.name] = 0;
+    for (const auto& c : r.cases) count[c.name] = 0;
+  }
+  relpos::Workspace ws;
+  relpos::Solution sol;
+  int invalid = 0, specs = 0;
+  for (const auto& f : specFiles(a.positional)) {
+    relpos::Problem pb;
+    if (!loadProblem(f, reg, &pb)) {
+      ++invalid;
+      continue;
+    }
+    ++specs;
+    relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
+    for (const char* name : sol.rules) ++count[name];
+  }
+  int never = 0;
+  for (const auto& r : reg.rules()) {
+    auto row = [&](const std::string& name, const std::string& citation) {
+      std::printf("%6d  %-36s %s\n", count[name], name.c_str(), citation.c_str());
+      never += count[name] == 0;
+    };
+    if (r.cases.empty()) row(r.name, r.citation);
+    for (const auto& c : r.cases) row(c.name, c.citation);
+  }
+  std::printf("%d specs solved, %d invalid; %d rule cases never fired", specs, invalid, never);
+  if (never) {
+    std::printf(":");
+    for (const auto& [name, n] : count)
+      if (n == 0) std::printf(" %s", name.c_str());
+  }
+  std::printf("\n");
+  return invalid ? kExitInvalid : kExitOk;
+}
+
 int cmdRules(const Args& a, const Registry& reg) {
-  if (!a.positional.empty()) throw UsageError("rules takes no arguments");
+  if (a.coverage) return cmdRuleCoverage(a, reg);
+  if (!a.positional.empty()) throw UsageError("rules takes no arguments (or --coverage DIR)");
   std::cout << "constraint types:\n";
   for (const auto& t : reg.constraintTypes()) {
     std::cout << "  " << t.name << "  [" << t.origin << "]  " << t.description << "\n    accepts:";

@@ -200,7 +200,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c,
         Matrix3d R = F * R2 * M.transpose();
         bool dup = false;
         for (int j = 0; j < out.count; ++j)
-          dup = dup || rotationDistance(out.parts[j].R0, R) < 1e-9;
+          dup = dup || (out.parts[j].R0 - R).cwiseAbs().maxCoeff() < 1e-9;
         if (!dup) out.add(RotationPart::fixed(R));
       }
   return MatchResult::kMatched;

@@ -172,3 +172,17 @@ TEST(Readme, StartsWithTheTwoCommands) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Cli, RuleCoverageOverTheBundledProblems) {
+  CmdResult r = run("rules --coverage " RELPOS_DATA_DIR "/rules " RELPOS_DATA_DIR "/examples");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("0 rule cases never fired"), std::string::npos) << r.out;
+  CmdResult some = run("rules --coverage " RELPOS_DATA_DIR "/examples/pmf-simple-example.json");
+  ASSERT_EQ(some.code, 0);
+  EXPECT_NE(some.out.find("1 specs solved"), std::string::npos) << some.out;
+  EXPECT_NE(some.out.find("never fired: "), std::string::npos);
+}
+
+}  // namespace
