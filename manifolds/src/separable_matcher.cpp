@@ -130,7 +130,19 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
     iv = iv2;
   }
   if (iv.degenerate) return MatchResult::kNoMatch;
-  if (iv.count == 0)
+  // Where the cone of R u_m passes through ±v_f and cos β = ±cos σ_m, the second angle holds for
+  // every spin about u_m: the whole circle {R u_m = ±v_f} belongs to the set, and θ(φ) (0/0 there)
+  // misses it. Add it as a one-parallelism branch.
+  const double cos_sm = a->u_m.dot(b->u_m);
+  int n_circles = 0;
+  for (double s : {1.0, -1.0}) {
+    if (ctx.tol.equalAngle(angleBetween(s * b->u_f, a->u_f), a->alpha) &&
+        std::abs(s * cos_sm - std::cos(b->alpha)) <= ctx.tol.angle) {
+      out.add(RotationPart::oneParallel(a->u_m, s * b->u_f));
+      ++n_circles;
+    }
+  }
+  if (iv.count == 0 && n_circles == 0)
     return inconsistent(ctx, a->sources | b->sources,
                         "two angle constraints that no rotation satisfies together");
   for (int k = 0; k < iv.count; ++k) {

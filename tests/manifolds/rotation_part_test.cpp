@@ -62,3 +62,44 @@ TEST(RotationPart, FreeProjectionRecoversRollPitchYaw) {
 
 }  // namespace
 }  // namespace relpos::test
+
+#include "evaluator.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+// Two angles where the cone of R u passes through the second fixed direction and cos β = cos σ_m:
+// there the second angle holds for every spin about u, a whole circle of rotations that θ(φ)
+// alone misses (found by the random triples test on integer geometry).
+TEST(TwoAngleRotation, DegenerateSpinCircleIsPartOfTheSolution) {
+  Problem p;
+  p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addFixedFeature("Z", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("u", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("v", Feature::makeLine({0, 0, 0}, {0, 0.6, 0.8}));
+  p.addConstraint("angle", "X", "u", kPi / 2);
+  p.addConstraint("angle", "Z", "v", std::acos(0.8));
+  Solution s = solve(p, builtinRegistry());
+  ASSERT_EQ(s.status, Status::kSolved) << s.message;
+  auto pose = [](const Vector3d& axis, double t) {
+    Isometry3d X = Isometry3d::Identity();
+    X.linear() = Eigen::AngleAxisd(t, axis).toRotationMatrix();
+    return X;
+  };
+  // Every spin about z keeps u along Z and v at its angle from Z.
+  for (double t : {0.0, 0.4, 1.9, -2.5}) {
+    Isometry3d X = pose(Vector3d::UnitZ(), t);
+    ASSERT_LT(worstViolation(p, X), 1e-12);
+    EXPECT_TRUE(someBranchContains(s, X)) << "spin " << t << "\n" << describeBranches(s);
+  }
+  // And a solution off that circle: a turn about x by 2 atan(0.6 / 0.8).
+  Isometry3d Y = pose(Vector3d::UnitX(), 2 * std::atan2(0.6, 0.8));
+  ASSERT_LT(worstViolation(p, Y), 1e-12);
+  EXPECT_TRUE(someBranchContains(s, Y)) << describeBranches(s);
+  std::string where;
+  EXPECT_LT(worstSampledViolation(p, s, 300, 5, &where), 1e-9) << where;
+}
+
+}  // namespace
+}  // namespace relpos::test
