@@ -73,13 +73,14 @@ namespace {
 // there the second angle holds for every spin about u, a whole circle of rotations that θ(φ)
 // alone misses (found by the random triples test on integer geometry).
 TEST(TwoAngleRotation, DegenerateSpinCircleIsPartOfTheSolution) {
+  // u ⊥ X and v ⊥ Z with u = z, v = x: degenerate whichever constraint carries the spin φ.
   Problem p;
   p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
       .addFixedFeature("Z", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
       .addMobileFeature("u", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
-      .addMobileFeature("v", Feature::makeLine({0, 0, 0}, {0, 0.6, 0.8}));
-  p.addConstraint("angle", "X", "u", kPi / 2);
-  p.addConstraint("angle", "Z", "v", std::acos(0.8));
+      .addMobileFeature("v", Feature::makeLine({0, 0, 0}, {1, 0, 0}));
+  p.addConstraint("perpendicular", "X", "u");
+  p.addConstraint("perpendicular", "Z", "v");
   Solution s = solve(p, builtinRegistry());
   ASSERT_EQ(s.status, Status::kSolved) << s.message;
   auto pose = [](const Vector3d& axis, double t) {
@@ -87,16 +88,15 @@ TEST(TwoAngleRotation, DegenerateSpinCircleIsPartOfTheSolution) {
     X.linear() = Eigen::AngleAxisd(t, axis).toRotationMatrix();
     return X;
   };
-  // Every spin about z keeps u along Z and v at its angle from Z.
-  for (double t : {0.0, 0.4, 1.9, -2.5}) {
-    Isometry3d X = pose(Vector3d::UnitZ(), t);
-    ASSERT_LT(worstViolation(p, X), 1e-12);
-    EXPECT_TRUE(someBranchContains(s, X)) << "spin " << t << "\n" << describeBranches(s);
-  }
-  // And a solution off that circle: a turn about x by 2 atan(0.6 / 0.8).
-  Isometry3d Y = pose(Vector3d::UnitX(), 2 * std::atan2(0.6, 0.8));
-  ASSERT_LT(worstViolation(p, Y), 1e-12);
-  EXPECT_TRUE(someBranchContains(s, Y)) << describeBranches(s);
+  // Every spin about z keeps u = z ⊥ X and v in the xy-plane; every spin about x keeps v = x ⊥ Z
+  // and u in the yz-plane.
+  for (const Vector3d& axis : {Vector3d::UnitZ(), Vector3d::UnitX()})
+    for (double t : {0.0, 0.4, 1.9, -2.5}) {
+      Isometry3d X = pose(axis, t);
+      ASSERT_LT(worstViolation(p, X), 1e-12);
+      EXPECT_TRUE(someBranchContains(s, X))
+          << "spin " << t << " about " << axis.transpose() << "\n" << describeBranches(s);
+    }
   std::string where;
   EXPECT_LT(worstSampledViolation(p, s, 300, 5, &where), 1e-9) << where;
 }
