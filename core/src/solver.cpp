@@ -202,6 +202,17 @@ void decomposeAll(const Problem& problem, SolveState& st) {
   }
 }
 
+bool deferSet(void* state, const ConstraintSet& derived) {
+  SolveState& st = *static_cast<SolveState*>(state);
+  // The capacity check keeps the set a matcher is reading from valid (no reallocation).
+  if (static_cast<int>(st.ws.pending.size()) >= st.options.max_branches ||
+      st.ws.pending.size() == st.ws.pending.capacity())
+    return false;
+  st.ws.pending.push_back(derived);
+  st.ws.pending.back().tested.clear();
+  return true;
+}
+
 void listBits(SourceMask m, std::vector<int>& out) {
   for (int k = 0; k < 64; ++k)
     if (m >> k & 1) out.push_back(k);
@@ -213,6 +224,8 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
            Workspace& ws, Solution& solution) {
   const auto t0 = std::chrono::steady_clock::now();
   solution.clear();
+  if (ws.pending.capacity() < static_cast<std::size_t>(options.max_branches))
+    ws.pending.reserve(static_cast<std::size_t>(options.max_branches));
   const Tolerance tol = Tolerance::forScale(problem.lengthScale(), options.length_tolerance,
                                            options.angle_tolerance);
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
@@ -242,7 +255,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
     for (const MatcherInfo& m : registry.matchers()) {
-      MatchContext ctx{set, tol, solution};
+      MatchContext ctx{set, tol, solution, &deferSet, &st};
       r = m.fn(ctx);
       if (r == MatchResult::kInconsistent) {
         st.conflicts |= ctx.conflict;
@@ -259,6 +272,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
       setUnhandled(st, "too many solution branches");
       break;
     }
+    if (r == MatchResult::kDeferred) continue;  // its derived sets come later in `pending`
     if (r == MatchResult::kMatched) {
       any_solved_set = true;
       redundant &= set.dropped_redundant & ~set.usedSources();

@@ -328,16 +328,60 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol, Translatio
   }
 }
 
+// With the rotation known, every translational constraint confines T to a fixed shape: re-anchor
+// them all to the mobile frame's origin (T = R·0 + T), where the one-point rules of PMF App. IV
+// apply whatever points, roles and frames the constraints had (PMF §V: T is solved for the
+// current R). One derived set per rotation; the rotation rides along as two parallelisms.
+Fundamental reanchored(const Fundamental& f, const Matrix3d& R) {
+  const Vector3d origin = Vector3d::Zero();
+  Fundamental g = f;
+  if (f.point_side == Side::kMobile) {
+    g.q = f.q - R * f.p;  // fixed element shifted by the mobile point's offset
+  } else {
+    g.q = f.p - R * f.q;  // T on the shape p − R X: point p_f, element moved by R
+    g.d = R * f.d;
+  }
+  g.point_side = Side::kMobile;
+  g.p = origin;
+  return g;
+}
+
+bool anchored(const ConstraintSet& set) {
+  for (const auto& f : set.translational)
+    if (f.point_side != Side::kMobile || !f.p.isZero(0.0)) return false;
+  return true;
+}
+
+MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
+  if (!ctx.defer || anchored(ctx.set)) return MatchResult::kNoMatch;
+  for (int k = 0; k < rots.count; ++k)
+    if (rots.parts[k].kind != RotationKind::kFixed) return MatchResult::kNoMatch;
+  SourceMask rot_sources = 0;
+  for (const auto& f : ctx.set.rotational) rot_sources |= f.sources;
+  ConstraintSet derived;
+  for (int k = 0; k < rots.count; ++k) {
+    const Matrix3d& R = rots.parts[k].R0;
+    derived.clear();
+    derived.dropped_redundant = ctx.set.dropped_redundant;
+    derived.add(Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources));
+    derived.add(Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources));
+    for (const auto& f : ctx.set.translational) derived.add(reanchored(f, R));
+    if (!ctx.defer(ctx.solver, derived)) return MatchResult::kOverflow;
+  }
+  return MatchResult::kDeferred;
+}
+
 MatchResult matchSeparable(MatchContext& ctx) {
   for (const auto& f : ctx.set.translational)
     if (!f.exact()) return MatchResult::kNoMatch;
   for (const auto& f : ctx.set.rotational)
     if (!f.exact()) return MatchResult::kNoMatch;
   TranslationPart trans;
-  if (!matchTranslation(ctx.set, ctx.tol, trans)) return MatchResult::kNoMatch;
+  const bool translation_matched = matchTranslation(ctx.set, ctx.tol, trans);
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
+  if (!translation_matched) return reanchorForEachRotation(ctx, rots);
   for (int k = 0; k < rots.count; ++k) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
     ctx.out.branches.emplace_back();

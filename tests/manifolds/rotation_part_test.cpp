@@ -90,7 +90,7 @@ TEST(TwoAngleRotation, DegenerateSpinCircleIsPartOfTheSolution) {
   };
   // Every spin about z keeps u = z ⊥ X and v in the xy-plane; every spin about x keeps v = x ⊥ Z
   // and u in the yz-plane.
-  for (const Vector3d& axis : {Vector3d::UnitZ(), Vector3d::UnitX()})
+  for (Vector3d axis : {Vector3d(Vector3d::UnitZ()), Vector3d(Vector3d::UnitX())})
     for (double t : {0.0, 0.4, 1.9, -2.5}) {
       Isometry3d X = pose(axis, t);
       ASSERT_LT(worstViolation(p, X), 1e-12);

@@ -73,13 +73,18 @@ struct RuleInfo {
 
 // --- manifold matchers -------------------------------------------------------------------------
 // A matcher looks at a fully combined constraint set and either appends branches to the
-// solution (kMatched), proves the set empty (kInconsistent, with `conflict` and `reason`), or
-// passes (kNoMatch).
-enum class MatchResult : unsigned char { kNoMatch, kMatched, kInconsistent, kOverflow };
+// solution (kMatched), proves the set empty (kInconsistent, with `conflict` and `reason`),
+// replaces it by derived sets that the solver combines and matches in turn (kDeferred, e.g. the
+// translational constraints re-anchored once the rotation is known), or passes (kNoMatch).
+enum class MatchResult : unsigned char { kNoMatch, kMatched, kInconsistent, kOverflow, kDeferred };
+// Queues a derived constraint set; false when the solver's branch budget is spent.
+using DeferFn = bool (*)(void* solver, const ConstraintSet& derived);
 struct MatchContext {
   const ConstraintSet& set;
   const Tolerance& tol;
   Solution& out;
+  DeferFn defer = nullptr;
+  void* solver = nullptr;
   SourceMask conflict = 0;
   const char* reason = "";
 };
