@@ -280,11 +280,41 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
   return MatchResult::kNoMatch;
 }
 
-// Both directions of two translational constraints turn together with R (or neither turns), so
-// their relative orientation is the same for every rotation.
-bool sameFrame(const Fundamental& a, const Fundamental& b) { return a.point_side == b.point_side; }
+// The world direction of a translational constraint's element under rotation part r, when it is
+// the same for every rotation of r: fixed elements always; mobile ones under a fixed rotation or
+// when they lie along the spin axis of a one-parallelism rotation.
+bool invariantDirection(const Fundamental& f, const RotationPart& r, const Tolerance& tol,
+                        Vector3d* d_W) {
+  if (f.point_side == Side::kMobile) {
+    *d_W = f.d;
+    return true;
+  }
+  if (r.kind == RotationKind::kFixed ||
+      (r.kind == RotationKind::kOneParallel && f.d.cross(r.u_m).norm() <= tol.angle)) {
+    *d_W = r.R0 * f.d;
+    return true;
+  }
+  return false;
+}
 
-bool matchTranslation(const ConstraintSet& set, const Tolerance& tol, TranslationPart& out) {
+// Two elements keep their relative orientation for every rotation of every alternative: both
+// turn with R (same frame), or both directions are invariant. `test` must hold for the pair of
+// directions (in a common frame) in each case.
+template <typename Test>
+bool holdsForEveryRotation(const Fundamental& a, const Fundamental& b,
+                           const RotationAlternatives& rots, const Tolerance& tol, Test test) {
+  if (a.point_side == b.point_side) return test(a.d, b.d);
+  for (int k = 0; k < rots.count; ++k) {
+    Vector3d da, db;
+    if (!invariantDirection(a, rots.parts[k], tol, &da) ||
+        !invariantDirection(b, rots.parts[k], tol, &db) || !test(da, db))
+      return false;
+  }
+  return true;
+}
+
+bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
+                      const RotationAlternatives& rots, TranslationPart& out) {
   const auto& ts = set.translational;
   if (ts.size() == 0) {
     out.kind = TranslationKind::kFree;
@@ -304,7 +334,7 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol, Translatio
       case FundamentalKind::kAngle: return false;
     }
   }
-  if (ts.size() != 2 || !sameFrame(ts[0], ts[1])) return false;
+  if (ts.size() != 2) return false;
   const Fundamental* plane = nullptr;
   const Fundamental* other = nullptr;
   for (int k = 0; k < 2; ++k) {
@@ -316,14 +346,16 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol, Translatio
   out.c1 = *other;
   switch (other->kind) {
     case FundamentalKind::kPointPlane:
-      if (other->d.cross(plane->d).norm() <= tol.angle) return false;
       out.kind = TranslationKind::kLineOfPlanes;
-      return true;
+      return holdsForEveryRotation(*other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
+        return a.cross(b).norm() > tol.angle;  // the planes meet in a line
+      });
     case FundamentalKind::kPointLine:
-      if (std::abs(other->d.dot(plane->d)) <= tol.angle) return false;
       out.kind = other->value() == 0.0 ? TranslationKind::kPointOfLinePlane
                                        : TranslationKind::kEllipse;
-      return true;
+      return holdsForEveryRotation(*other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
+        return std::abs(a.dot(b)) > tol.angle;  // the line (axis) crosses the plane
+      });
     default: return false;
   }
 }
@@ -376,12 +408,11 @@ MatchResult matchSeparable(MatchContext& ctx) {
     if (!f.exact()) return MatchResult::kNoMatch;
   for (const auto& f : ctx.set.rotational)
     if (!f.exact()) return MatchResult::kNoMatch;
-  TranslationPart trans;
-  const bool translation_matched = matchTranslation(ctx.set, ctx.tol, trans);
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
-  if (!translation_matched) return reanchorForEachRotation(ctx, rots);
+  TranslationPart trans;
+  if (!matchTranslation(ctx.set, ctx.tol, rots, trans)) return reanchorForEachRotation(ctx, rots);
   for (int k = 0; k < rots.count; ++k) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
     ctx.out.branches.emplace_back();
