@@ -13,7 +13,7 @@ namespace {
 using namespace detail;
 
 // Case indices: 0 and 1 in every family; 2 is the angle (pp0+pp, pp0+pplane) or the cone (pp0+pl).
-enum Case { kIncompatible = 0, kImplied = 1, kAngle = 2, kCone = 2, kPoints = 3 };
+enum Case { kIncompatible = 0, kImplied = 1, kAngle = 2, kCone = 2, kPoints = 3, kThrough = 4 };
 
 bool pinned(const Fundamental& f, const Tolerance& tol) {
   return f.kind == FundamentalKind::kPointPoint && tol.zeroLength(f.value());
@@ -88,10 +88,19 @@ void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tol
   // Fixed point Q_f at distance q from the mobile line (c_m, d_m): |(Rᵀw − (c_m − P_m)) × d_m| = q.
   const Vector3d w = b.p - pin.q;
   const Vector3d e = (b.q - pin.p) - (b.q - pin.p).dot(b.d) * b.d;
-  const double nw = w.norm();
-  if (nw <= tol.length) return impliedOrIncompatible(tol.equalLength(e.norm(), q), out);
-  if (e.norm() > tol.length) return;
-  pinSinCone(pin, b.d, w / nw, q, nw, tol, out);
+  const double nw = w.norm(), ne = e.norm();
+  if (nw <= tol.length) return impliedOrIncompatible(tol.equalLength(ne, q), out);
+  if (ne <= tol.length) return pinSinCone(pin, b.d, w / nw, q, nw, tol, out);
+  if (!tol.zeroLength(q)) return;
+  // The mobile line passes at e from the pinned point; it must carry Q_f, at |w| from the pin:
+  // its points e ± k d (k = sqrt(|w|² − |e|²)) are the ones R can lay onto w (derived from the
+  // geometry): one parallelism per point.
+  if (nw < ne - tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
+  const double k = nw > ne ? std::sqrt(nw * nw - ne * ne) : 0.0;
+  out.fire(kThrough);
+  if (k <= tol.length) return two(out, pin, Fundamental::angle(e / ne, w / nw, 0.0, 0));
+  two(out, pin, Fundamental::angle((e + k * b.d).normalized(), w / nw, 0.0, 0));
+  two(out, pin, Fundamental::angle((e - k * b.d).normalized(), w / nw, 0.0, 0));
 }
 
 void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,
@@ -125,7 +134,8 @@ void registerPinnedPointRules(Registry& r) {
             {{"pp0+pl/incompatible", "PMF App. IV Table II, row 1 with p = 0"},
              {"pp0+pl/implied", "PMF App. IV Table II, row 2"},
              {"pp0+pl/cone", "PMF App. IV Table II, row 4 (d_a > q, d_b = 0, p = 0)"},
-             {"pp0+pl/points", "PMF App. IV Table II, row 10 (d_b < d_a, p = q = 0)"}});
+             {"pp0+pl/points", "PMF App. IV Table II, row 10 (d_b < d_a, p = q = 0)"},
+             {"pp0+pl/line-through-point", "PMF App. IV Table VIII, p = 0 rows (generalised)"}});
   addFamily(r, "pp0+pplane", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
             FK::kPointPoint, FK::kPointPlane, &pinnedWithPointPlane,
             {{"pp0+pplane/incompatible", "PMF App. IV Table V, row 1 with p = 0"},
