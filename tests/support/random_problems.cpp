@@ -248,6 +248,12 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
   }
   c.value = c.min = c.max = v;
   c.fixed = fW.placed(X_WF.inverse());
+  if (kp.noise > 0) {
+    // Rounding-level noise on the fixed feature (as data exported with finite precision), so the
+    // special cases sit within the tolerance instead of exactly on it.
+    c.fixed.point += kp.noise * rng.point(1.0);
+    c.fixed.direction = (c.fixed.direction + kp.noise * rng.point(1.0)).normalized();
+  }
   c.mobile = m;
   c.fixed_name = "f" + tag;
   c.mobile_name = reusing ? reuse->name : "m" + tag;

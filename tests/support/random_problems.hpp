@@ -43,7 +43,8 @@ const std::vector<SingleKind>& singleKinds();
 
 struct KnownProblem {
   Problem problem;
-  Isometry3d X_WM_star;  // a pose known to satisfy every constraint
+  Isometry3d X_WM_star;  // a pose known to satisfy every constraint (up to `noise`)
+  double noise = 0.0;    // perturbation of fixed features added by addConstraint
 };
 
 // Adds one constraint of `kind` (with a random value where it takes one) between a mobile feature
