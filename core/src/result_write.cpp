@@ -37,7 +37,15 @@ json resultToJson(const Problem& problem, const Solution& solution, const Result
   r["relpos"] = 1;
   r["name"] = problem.name;
   r["status"] = toString(solution.status);
-  r["message"] = solution.message;
+  // Name the user's constraint ids next to the indices in the message (SPEC: ids are echoed).
+  std::string message = solution.message;
+  std::string ids;
+  for (int k : solution.conflicts) {
+    const std::string& id = problem.constraints[static_cast<std::size_t>(k)].id;
+    if (!id.empty()) ids += (ids.empty() ? "" : ", ") + std::to_string(k) + " = '" + id + "'";
+  }
+  if (!ids.empty()) message += " (constraints " + ids + ")";
+  r["message"] = message;
   json branches = json::array();
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();

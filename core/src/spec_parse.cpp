@@ -277,16 +277,30 @@ class Parser {
     return false;
   }
 
+  // Parses one constraint; its problems mention the user's "id" when it has one.
   void constraint(const json& j, const std::string& path, const Problem& pb, InputConstraint* c,
                   bool* ok_out) {
+    const std::size_t first_error = out_.errors.size();
+    constraintFields(j, path, pb, c, ok_out);
+    if (!c->id.empty())
+      for (std::size_t i = first_error; i < out_.errors.size(); ++i)
+        out_.errors[i].message += " (constraint id '" + c->id + "')";
+  }
+
+  void constraintFields(const json& j, const std::string& path, const Problem& pb,
+                        InputConstraint* c, bool* ok_out) {
     *ok_out = false;
     if (!j.is_object()) return error(path, "expected an object");
     unknownFields(j, path, {"type", "fixed", "mobile", "value", "min", "max", "orientation",
                             "parallel", "id"});
     bool ok = true;
     if (j.contains("id")) {
-      if (j["id"].is_string()) c->id = j["id"].get<std::string>();
-      else error(join(path, "id"), "expected a string"), ok = false;
+      if (j["id"].is_string()) {
+        c->id = j["id"].get<std::string>();
+      } else {
+        error(join(path, "id"), "expected a string");
+        ok = false;
+      }
     }
     const ConstraintType* type = nullptr;
     if (!j.contains("type")) {
@@ -368,8 +382,10 @@ class Parser {
       if (o == "aligned") c->orientation = Orientation::kAligned;
       else if (o == "opposed") c->orientation = Orientation::kOpposed;
       else if (o == "either") c->orientation = Orientation::kEither;
-      else error(join(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\""),
-          vals_ok = false;
+      else {
+        error(join(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\"");
+        vals_ok = false;
+      }
     }
     if (j.contains("parallel")) {
       if (!j["parallel"].is_boolean()) {

@@ -72,6 +72,17 @@ TEST(Cli, SolveWorkedExample) {
   EXPECT_TRUE(j["stats"]["solve_us"].is_number());
 }
 
+TEST(Cli, InconsistentNamesConstraintsAndTheirIds) {
+  CmdResult r = run("solve " RELPOS_DATA_DIR "/examples/inconsistent-two-points.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "inconsistent");
+  EXPECT_EQ(j["conflicts"], nlohmann::json({0, 1}));
+  EXPECT_EQ(j["branches"].size(), 0u);
+  const std::string msg = j["message"];
+  EXPECT_NE(msg.find("(constraints 0 = 'P on A', 1 = 'Q on B')"), std::string::npos) << msg;
+}
+
 TEST(Cli, SameSeedSameSamples) {
   CmdResult a = run("solve " + kExample + " --samples 4 --seed 9");
   CmdResult b = run("solve " + kExample + " --samples 4 --seed 9");

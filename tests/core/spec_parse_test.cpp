@@ -176,6 +176,14 @@ TEST(SpecParse, RangesAndSkewParse) {
   EXPECT_EQ(s.status, Status::kUnhandled);  // until the inequality issue
 }
 
+TEST(SpecParse, ConstraintIdIsEchoed) {
+  ParseResult r = parse(
+      spec(R"({"type": "coincident", "fixed": "K", "mobile": "nope", "id": "grasp-1"})"));
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].message.find("(constraint id 'grasp-1')"), std::string::npos)
+      << r.errors[0].message;
+}
+
 TEST(SpecParse, UnknownFieldsAreWarnings) {
   ParseResult r =
       parse(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp", "colour": "red"})"));
