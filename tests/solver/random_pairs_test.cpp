@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "evaluator.hpp"
+#include "local_dof.hpp"
 #include "random_problems.hpp"
 #include "solve_helpers.hpp"
 
@@ -17,7 +18,7 @@ namespace relpos::test {
 namespace {
 
 struct Tally {
-  int solved = 0, unhandled = 0;
+  int solved = 0, unhandled = 0, dof_checked = 0;
 };
 
 void checkKnown(const KnownProblem& kp, std::uint64_t seed, Tally& tally) {
@@ -35,8 +36,16 @@ void checkKnown(const KnownProblem& kp, std::uint64_t seed, Tally& tally) {
   ++tally.solved;
   std::string where;
   EXPECT_LT(worstSampledViolation(kp.problem, s, 16, seed, &where), 1e-7) << where;
-  EXPECT_TRUE(someBranchContains(s, kp.X_WM_star, 1e-6))
-      << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+  const int dof = dofOfBranchesContaining(s, kp.X_WM_star, 1e-6);
+  EXPECT_GE(dof, 0) << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+  if (dof >= 0 && kp.noise == 0.0 && !kp.special) {
+    // The branch through the known pose has the dimension of the solution set there, measured
+    // independently by the rank of the constraints' Jacobian (generic geometry only: integer
+    // geometry puts known poses on branch crossings, where the rank drops).
+    EXPECT_EQ(dof, localDof(kp.problem, kp.X_WM_star))
+        << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+    ++tally.dof_checked;
+  }
 }
 
 void runPairs(bool grid, bool share, std::uint64_t seed, double noise = 0.0) {
@@ -49,6 +58,7 @@ void runPairs(bool grid, bool share, std::uint64_t seed, double noise = 0.0) {
       SCOPED_TRACE(std::string(kinds[i].label) + " + " + kinds[j].label);
       KnownProblem kp = emptyKnownProblem(rng, grid);
       kp.noise = noise;
+      kp.special = grid;
       addConstraint(kp, kinds[i], rng, grid);
       const NamedFeature* reuse = share ? &kp.problem.mobile.features.back() : nullptr;
       NamedFeature copy = reuse ? *reuse : NamedFeature{};
@@ -57,8 +67,9 @@ void runPairs(bool grid, bool share, std::uint64_t seed, double noise = 0.0) {
       if (::testing::Test::HasFatalFailure()) return;
     }
   }
-  std::printf("[pairs grid=%d share=%d] solved %d, unhandled %d (%.1f%% solved)\n", grid, share,
-              tally.solved, tally.unhandled, 100.0 * tally.solved / (tally.solved + tally.unhandled));
+  std::printf("[pairs grid=%d share=%d] solved %d, unhandled %d (%.1f%% solved), DOF checked %d\n",
+              grid, share, tally.solved, tally.unhandled,
+              100.0 * tally.solved / (tally.solved + tally.unhandled), tally.dof_checked);
 }
 
 TEST(RandomPairs, GenericFresh) { runPairs(false, false, 11); }
@@ -83,6 +94,7 @@ TEST(RandomTriples, AllTriplesOfKinds) {
         const bool grid = count % 2, share = (count / 2) % 2;
         SCOPED_TRACE(std::string(kinds[i].label) + " + " + kinds[j].label + " + " + kinds[k].label);
         KnownProblem kp = emptyKnownProblem(rng, grid);
+        kp.special = grid;
         NamedFeature prev;
         for (std::size_t kind : {i, j, k}) {
           addConstraint(kp, kinds[kind], rng, grid, share && kind != i ? &prev : nullptr);
@@ -91,9 +103,9 @@ TEST(RandomTriples, AllTriplesOfKinds) {
         checkKnown(kp, 1000 + count, tally);
         if (::testing::Test::HasFatalFailure()) return;
       }
-  std::printf("[triples] %llu problems: solved %d, unhandled %d (%.1f%% solved)\n",
+  std::printf("[triples] %llu problems: solved %d, unhandled %d (%.1f%% solved), DOF checked %d\n",
               static_cast<unsigned long long>(count), tally.solved, tally.unhandled,
-              100.0 * tally.solved / count);
+              100.0 * tally.solved / count, tally.dof_checked);
 }
 
 // Families PMF claims: sets on one shared mobile point (translational) and rotation-only sets.
@@ -104,6 +116,7 @@ void runFamily(const std::vector<int>& family, bool grid, bool share, int trials
   Tally tally;
   for (int t = 0; t < trials; ++t) {
     KnownProblem kp = emptyKnownProblem(rng, grid);
+    kp.special = grid;
     NamedFeature shared;
     for (int k = 0; k < size; ++k) {
       const SingleKind& kind = kinds[family[rng.integer(0, static_cast<int>(family.size()) - 1)]];
@@ -114,8 +127,8 @@ void runFamily(const std::vector<int>& family, bool grid, bool share, int trials
     checkKnown(kp, seed + t, tally);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  std::printf("[%s grid=%d size=%d] solved %d of %d (%.1f%%)\n", label, grid, size, tally.solved,
-              trials, 100.0 * tally.solved / trials);
+  std::printf("[%s grid=%d size=%d] solved %d of %d (%.1f%%), DOF checked %d\n", label, grid,
+              size, tally.solved, trials, 100.0 * tally.solved / trials, tally.dof_checked);
 }
 
 std::vector<int> kindsWhere(bool (*pred)(const SingleKind&)) {

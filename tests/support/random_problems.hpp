@@ -45,6 +45,7 @@ struct KnownProblem {
   Problem problem;
   Isometry3d X_WM_star;  // a pose known to satisfy every constraint (up to `noise`)
   double noise = 0.0;    // perturbation of fixed features added by addConstraint
+  bool special = false;  // integer geometry: the known pose may sit on a singular point
 };
 
 // Adds one constraint of `kind` (with a random value where it takes one) between a mobile feature

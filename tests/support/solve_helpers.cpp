@@ -1,5 +1,6 @@
 #include "solve_helpers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -70,6 +71,15 @@ bool someBranchContains(const Solution& s, const Isometry3d& X, double tol) {
     if (poseDistance(X, Y) <= tol) return true;
   }
   return false;
+}
+
+int dofOfBranchesContaining(const Solution& s, const Isometry3d& X, double tol) {
+  int dof = -1;
+  for (const Branch& b : s.branches) {
+    Isometry3d Y = b.manifold->pose(nearestParams(*b.manifold, X));
+    if (poseDistance(X, Y) <= tol) dof = std::max(dof, b.manifold->dof());
+  }
+  return dof;
 }
 
 std::string describeBranches(const Solution& s) {

@@ -20,6 +20,8 @@ double worstSampledViolation(const Problem& p, const Solution& s, int n, std::ui
 
 // Whether some branch of s contains X (its projection lands on X).
 bool someBranchContains(const Solution& s, const Isometry3d& X, double tol = 1e-6);
+// The largest DOF among the branches containing X (-1 when none does).
+int dofOfBranchesContaining(const Solution& s, const Isometry3d& X, double tol = 1e-6);
 
 // "rotation OneParallel ..., 1 DOF" lines for failure messages.
 std::string describeBranches(const Solution& s);
