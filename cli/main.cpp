@@ -9,10 +9,9 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
@@ -61,19 +60,26 @@ Args parseArgs(int argc, char** argv, int first) {
       if (i + 1 >= argc) throw UsageError(s + ": missing value");
       return argv[++i];
     };
-    if (s == "--samples") a.result.samples = static_cast<int>(parseInt(s, value(), 0, 1000000));
-    else if (s == "--seed") a.result.seed = static_cast<std::uint64_t>(parseInt(s, value(), 0, LONG_MAX));
-    else if (s == "--repeat") a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
+    if (s == "--samples")
+      a.result.samples = static_cast<int>(parseInt(s, value(), 0, 1000000));
+    else if (s == "--seed")
+      a.result.seed = static_cast<std::uint64_t>(parseInt(s, value(), 0, LONG_MAX));
+    else if (s == "--repeat")
+      a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
     else if (s == "--window") {
       std::string v = value();
       char* end = nullptr;
       a.result.window = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(a.result.window >= 0) || !std::isfinite(a.result.window))
         throw UsageError("--window: expected a non-negative number, got '" + v + "'");
-    } else if (s == "-o") a.out = value();
-    else if (s == "--coverage") a.coverage = true;
-    else if (s.size() > 1 && s[0] == '-') throw UsageError("unknown option '" + s + "'");
-    else a.positional.push_back(s);
+    } else if (s == "-o")
+      a.out = value();
+    else if (s == "--coverage")
+      a.coverage = true;
+    else if (s.size() > 1 && s[0] == '-')
+      throw UsageError("unknown option '" + s + "'");
+    else
+      a.positional.push_back(s);
   }
   return a;
 }
@@ -93,8 +99,7 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
 
 bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* pb) {
   relpos::ParseResult r = relpos::parseSpecFile(file, reg);
-  for (const auto& w : r.warnings)
-    std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
+  for (const auto& w : r.warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
   for (const auto& e : r.errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
   if (!r.problem) return false;
   *pb = std::move(*r.problem);
@@ -109,8 +114,10 @@ int cmdSolve(const Args& a, const Registry& reg) {
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
   const std::string text = relpos::resultToJson(pb, sol, a.result).dump(2) + "\n";
-  if (a.out.empty()) std::cout << text;
-  else writeFileAtomically(a.out, text);
+  if (a.out.empty())
+    std::cout << text;
+  else
+    writeFileAtomically(a.out, text);
   return kExitOk;
 }
 
@@ -186,7 +193,8 @@ std::vector<std::string> specFiles(const std::vector<std::string>& inputs) {
     if (fs::is_directory(in)) {
       std::vector<std::string> here;
       for (const auto& e : fs::directory_iterator(in))
-        if (e.is_regular_file() && e.path().extension() == ".json") here.push_back(e.path().string());
+        if (e.is_regular_file() && e.path().extension() == ".json")
+          here.push_back(e.path().string());
       std::sort(here.begin(), here.end());
       files.insert(files.end(), here.begin(), here.end());
     } else if (fs::exists(in)) {

@@ -6,8 +6,8 @@
 #include "relpos/rules/builtin.hpp"
 
 int main() {
-  using relpos::Feature;
   using Eigen::Vector3d;
+  using relpos::Feature;
 
   // Once, at start-up: the registry of constraint types, rules and manifolds.
   relpos::Registry registry;

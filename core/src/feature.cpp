@@ -4,10 +4,14 @@ namespace relpos {
 
 const char* toString(FeatureKind kind) {
   switch (kind) {
-    case FeatureKind::kPoint: return "point";
-    case FeatureKind::kLine: return "line";
-    case FeatureKind::kPlane: return "plane";
-    case FeatureKind::kCylinder: return "cylinder";
+    case FeatureKind::kPoint:
+      return "point";
+    case FeatureKind::kLine:
+      return "line";
+    case FeatureKind::kPlane:
+      return "plane";
+    case FeatureKind::kCylinder:
+      return "cylinder";
   }
   return "?";
 }

@@ -4,10 +4,14 @@ namespace relpos {
 
 const char* toString(FundamentalKind k) {
   switch (k) {
-    case FundamentalKind::kPointPoint: return "point-point";
-    case FundamentalKind::kPointLine: return "point-line";
-    case FundamentalKind::kPointPlane: return "point-plane";
-    case FundamentalKind::kAngle: return "angle";
+    case FundamentalKind::kPointPoint:
+      return "point-point";
+    case FundamentalKind::kPointLine:
+      return "point-line";
+    case FundamentalKind::kPointPlane:
+      return "point-plane";
+    case FundamentalKind::kAngle:
+      return "angle";
   }
   return "?";
 }

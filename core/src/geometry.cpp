@@ -7,9 +7,9 @@ namespace relpos {
 Vector3d anyPerpendicular(const Vector3d& u) {
   // Cross with the world axis least aligned with u: well conditioned and deterministic.
   Vector3d a = u.cwiseAbs();
-  Vector3d axis = (a.x() <= a.y() && a.x() <= a.z())   ? Vector3d::UnitX()
-                  : (a.y() <= a.z())                    ? Vector3d::UnitY()
-                                                        : Vector3d::UnitZ();
+  Vector3d axis = (a.x() <= a.y() && a.x() <= a.z()) ? Vector3d::UnitX()
+                  : (a.y() <= a.z())                 ? Vector3d::UnitY()
+                                                     : Vector3d::UnitZ();
   return u.cross(axis).normalized();
 }
 
@@ -36,8 +36,7 @@ Matrix3d basisOf(const Vector3d& u, const Vector3d& v) {
 }
 }  // namespace
 
-Matrix3d rotationPairs(const Vector3d& u, const Vector3d& v, const Vector3d& r,
-                       const Vector3d& s) {
+Matrix3d rotationPairs(const Vector3d& u, const Vector3d& v, const Vector3d& r, const Vector3d& s) {
   return basisOf(r, s) * basisOf(u, v).transpose();
 }
 

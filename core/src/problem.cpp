@@ -7,9 +7,12 @@ namespace relpos {
 
 const char* toString(Orientation o) {
   switch (o) {
-    case Orientation::kAligned: return "aligned";
-    case Orientation::kOpposed: return "opposed";
-    case Orientation::kEither: return "either";
+    case Orientation::kAligned:
+      return "aligned";
+    case Orientation::kOpposed:
+      return "opposed";
+    case Orientation::kEither:
+      return "either";
   }
   return "?";
 }

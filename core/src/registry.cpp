@@ -17,15 +17,15 @@ void Registry::checkOpen() const {
 namespace {
 template <typename T>
 void addNamed(std::vector<T>& items, T item, bool replace, const char* what) {
-  auto it = std::find_if(items.begin(), items.end(),
-                         [&](const T& x) { return x.name == item.name; });
+  auto it =
+      std::find_if(items.begin(), items.end(), [&](const T& x) { return x.name == item.name; });
   if (it == items.end()) {
     items.push_back(std::move(item));
     return;
   }
   if (!replace)
-    throw std::invalid_argument(std::string(what) + " '" + item.name + "' is already registered (by " +
-                                it->origin + ")");
+    throw std::invalid_argument(std::string(what) + " '" + item.name +
+                                "' is already registered (by " + it->origin + ")");
   *it = std::move(item);
 }
 }  // namespace

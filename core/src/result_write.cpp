@@ -1,9 +1,8 @@
 // The result document (SPEC.md §2).
 #include <cmath>
 #include <limits>
-#include <random>
-
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -66,8 +65,11 @@ json resultToJson(const Problem& problem, const Solution& solution, const Result
     json params = json::array();
     for (int i = 0; i < dof; ++i) {
       const Parameter p = m.parameter(i);
-      params.push_back({{"name", p.name}, {"kind", toString(p.kind)}, {"min", num(p.min)},
-                        {"max", num(p.max)}, {"periodic", p.periodic}});
+      params.push_back({{"name", p.name},
+                        {"kind", toString(p.kind)},
+                        {"min", num(p.min)},
+                        {"max", num(p.max)},
+                        {"periodic", p.periodic}});
     }
     jb["parameters"] = params;
     const NearestPose n = nearestOnBranch(solution.branches[b], problem.mobile.pose);

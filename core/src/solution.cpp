@@ -7,19 +7,26 @@ namespace relpos {
 
 const char* toString(Status s) {
   switch (s) {
-    case Status::kNotSolved: return "not-solved";
-    case Status::kSolved: return "solved";
-    case Status::kInconsistent: return "inconsistent";
-    case Status::kUnhandled: return "unhandled";
+    case Status::kNotSolved:
+      return "not-solved";
+    case Status::kSolved:
+      return "solved";
+    case Status::kInconsistent:
+      return "inconsistent";
+    case Status::kUnhandled:
+      return "unhandled";
   }
   return "?";
 }
 
 const char* toString(ParamKind k) {
   switch (k) {
-    case ParamKind::kAngle: return "angle";
-    case ParamKind::kLength: return "length";
-    case ParamKind::kOther: return "other";
+    case ParamKind::kAngle:
+      return "angle";
+    case ParamKind::kLength:
+      return "length";
+    case ParamKind::kOther:
+      return "other";
   }
   return "other";
 }

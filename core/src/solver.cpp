@@ -137,7 +137,8 @@ restart:
             }
             goto restart;
           }
-          case RuleVerdict::kNoChange: break;
+          case RuleVerdict::kNoChange:
+            break;
         }
       }
       set.markTested(list[i], list[j]);
@@ -156,8 +157,8 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     const InputConstraint& c = problem.constraints[i];
     const ConstraintType* type = st.registry.constraintType(c.type);
     if (!type || !type->decompose) {
-      setUnhandled(st, "constraint " + std::to_string(i) + ": no decomposition for type '" +
-                           c.type + "'");
+      setUnhandled(
+          st, "constraint " + std::to_string(i) + ": no decomposition for type '" + c.type + "'");
       return;
     }
     // Problems built in code skip the parser: refuse what it would have refused.
@@ -226,8 +227,8 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
   solution.clear();
   if (ws.pending.capacity() < static_cast<std::size_t>(options.max_branches))
     ws.pending.reserve(static_cast<std::size_t>(options.max_branches));
-  const Tolerance tol = Tolerance::forScale(problem.lengthScale(), options.length_tolerance,
-                                           options.angle_tolerance);
+  const Tolerance tol =
+      Tolerance::forScale(problem.lengthScale(), options.length_tolerance, options.angle_tolerance);
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
 
   std::string why;
@@ -264,8 +265,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
       if (r != MatchResult::kNoMatch) break;
     }
     if (r == MatchResult::kNoMatch) {
-      setUnhandled(st, "no solution manifold matches the combined constraints:" +
-                           describeSet(set));
+      setUnhandled(st, "no solution manifold matches the combined constraints:" + describeSet(set));
       break;
     }
     if (r == MatchResult::kOverflow) {

@@ -2,10 +2,9 @@
 // so a user fixes a spec in one round.
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "relpos/core/spec_io.hpp"
 
@@ -19,7 +18,9 @@ class Parser {
  public:
   Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
 
-  void error(const std::string& path, const std::string& msg) { out_.errors.push_back({path, msg}); }
+  void error(const std::string& path, const std::string& msg) {
+    out_.errors.push_back({path, msg});
+  }
   void warn(const std::string& path, const std::string& msg) {
     out_.warnings.push_back({path, msg});
   }
@@ -57,7 +58,8 @@ class Parser {
       return false;
     }
     bool ok = true;
-    for (int i = 0; i < n; ++i) ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
+    for (int i = 0; i < n; ++i)
+      ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
     return ok;
   }
 
@@ -99,8 +101,10 @@ class Parser {
       error("units.length", "expected a string");
     if (j.contains("angle")) {
       const json& a = j["angle"];
-      if (a == "deg") deg_ = true;
-      else if (a != "rad") error("units.angle", "expected \"rad\" or \"deg\"");
+      if (a == "deg")
+        deg_ = true;
+      else if (a != "rad")
+        error("units.angle", "expected \"rad\" or \"deg\"");
     }
   }
 
@@ -134,8 +138,9 @@ class Parser {
                    std::abs(R.determinant() - 1.0) < 1e-6 &&
                    (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() < 1e-12;
       if (!rigid) {
-        error(mp, "not a rigid transform (rotation must be orthonormal with determinant +1, "
-                  "last row [0, 0, 0, 1])");
+        error(mp,
+              "not a rigid transform (rotation must be orthonormal with determinant +1, "
+              "last row [0, 0, 0, 1])");
         return false;
       }
       // Re-orthonormalise so later maths sees an exact rotation.
@@ -145,8 +150,10 @@ class Parser {
     }
     if (j.contains("position")) {
       Vector3d p;
-      if (vec3(j["position"], join(path, "position"), &p)) X->translation() = p;
-      else ok = false;
+      if (vec3(j["position"], join(path, "position"), &p))
+        X->translation() = p;
+      else
+        ok = false;
     }
     if (j.contains("orientation") && j.contains("rpy")) {
       error(path, "give either \"orientation\" or \"rpy\", not both");
@@ -176,8 +183,9 @@ class Parser {
 
   bool feature(const json& j, const std::string& path, Feature* f) {
     if (!j.is_object() || j.size() != 1) {
-      error(path, "expected an object with exactly one of \"point\", \"line\", \"plane\", "
-                  "\"cylinder\"");
+      error(path,
+            "expected an object with exactly one of \"point\", \"line\", \"plane\", "
+            "\"cylinder\"");
       return false;
     }
     const std::string kind = j.begin().key();
@@ -198,8 +206,10 @@ class Parser {
       return false;
     }
     const char* dir_key = kind == "plane" ? "normal" : "direction";
-    if (kind == "cylinder") unknownFields(b, bp, {"point", "direction", "radius"});
-    else unknownFields(b, bp, {"point", dir_key});
+    if (kind == "cylinder")
+      unknownFields(b, bp, {"point", "direction", "radius"});
+    else
+      unknownFields(b, bp, {"point", dir_key});
     bool ok = point(b, bp, "point", &p);
     ok = direction(b, bp, dir_key, &d) && ok;
     if (kind == "cylinder") {
@@ -223,13 +233,17 @@ class Parser {
     unknownFields(j, path, {"name", "pose", "features", "mesh"});
     o->name = path;
     if (j.contains("name")) {
-      if (j["name"].is_string()) o->name = j["name"].get<std::string>();
-      else error(join(path, "name"), "expected a string");
+      if (j["name"].is_string())
+        o->name = j["name"].get<std::string>();
+      else
+        error(join(path, "name"), "expected a string");
     }
     if (j.contains("pose")) pose(j["pose"], join(path, "pose"), &o->pose);
     if (j.contains("mesh")) {
-      if (j["mesh"].is_string()) o->mesh = j["mesh"].get<std::string>();
-      else error(join(path, "mesh"), "expected a file name");
+      if (j["mesh"].is_string())
+        o->mesh = j["mesh"].get<std::string>();
+      else
+        error(join(path, "mesh"), "expected a file name");
     }
     if (!j.contains("features")) {
       if (features_required) error(join(path, "features"), "missing");
@@ -265,15 +279,14 @@ class Parser {
           *f = x->axis();
           return true;
         }
-        error(path, "'" + base + "' is a " + toString(x->kind) +
-                        ", only a cylinder has an axis");
+        error(path, "'" + base + "' is a " + toString(x->kind) + ", only a cylinder has an axis");
         return false;
       }
     }
     std::string have;
     for (const auto& nf : o.features) have += (have.empty() ? "" : ", ") + nf.name;
-    error(path, "no feature '" + *name + "' on " + role + " object '" + o.name + "' (it has: " +
-                    (have.empty() ? "no features" : have) + ")");
+    error(path, "no feature '" + *name + "' on " + role + " object '" + o.name +
+                    "' (it has: " + (have.empty() ? "no features" : have) + ")");
     return false;
   }
 
@@ -291,8 +304,9 @@ class Parser {
                         InputConstraint* c, bool* ok_out) {
     *ok_out = false;
     if (!j.is_object()) return error(path, "expected an object");
-    unknownFields(j, path, {"type", "fixed", "mobile", "value", "min", "max", "orientation",
-                            "parallel", "id"});
+    unknownFields(
+        j, path,
+        {"type", "fixed", "mobile", "value", "min", "max", "orientation", "parallel", "id"});
     bool ok = true;
     if (j.contains("id")) {
       if (j["id"].is_string()) {
@@ -326,17 +340,16 @@ class Parser {
         ok = false;
       }
     }
-    bool have_f = j.contains("fixed") &&
-                  resolve(j["fixed"], join(path, "fixed"), pb.fixed, "fixed", &c->fixed_name,
-                          &c->fixed);
-    bool have_m = j.contains("mobile") &&
-                  resolve(j["mobile"], join(path, "mobile"), pb.mobile, "mobile",
-                          &c->mobile_name, &c->mobile);
+    bool have_f = j.contains("fixed") && resolve(j["fixed"], join(path, "fixed"), pb.fixed, "fixed",
+                                                 &c->fixed_name, &c->fixed);
+    bool have_m = j.contains("mobile") && resolve(j["mobile"], join(path, "mobile"), pb.mobile,
+                                                  "mobile", &c->mobile_name, &c->mobile);
     ok = ok && have_f && have_m;
     if (type && have_f && have_m && !type->accepts_pair(c->fixed.kind, c->mobile.kind)) {
       std::string acc;
       for (const auto& p : type->accepts)
-        acc += (acc.empty() ? "" : ", ") + std::string(toString(p.fixed)) + "-" + toString(p.mobile);
+        acc +=
+            (acc.empty() ? "" : ", ") + std::string(toString(p.fixed)) + "-" + toString(p.mobile);
       error(path, "constraint type '" + c->type + "' does not accept " + toString(c->fixed.kind) +
                       "-" + toString(c->mobile.kind) + " features (fixed-mobile; accepts: " + acc +
                       ")");
@@ -363,8 +376,9 @@ class Parser {
       vals_ok = false;
     }
     if (type && type->takes_value && !c->has_value && !has_min && !has_max && vals_ok) {
-      error(join(path, "value"), "missing (a '" + c->type + "' constraint needs \"value\" or "
-                                 "\"min\"/\"max\")");
+      error(join(path, "value"), "missing (a '" + c->type +
+                                     "' constraint needs \"value\" or "
+                                     "\"min\"/\"max\")");
       vals_ok = false;
     }
     if (type && !type->takes_value) {
@@ -379,9 +393,12 @@ class Parser {
     }
     if (j.contains("orientation")) {
       const json& o = j["orientation"];
-      if (o == "aligned") c->orientation = Orientation::kAligned;
-      else if (o == "opposed") c->orientation = Orientation::kOpposed;
-      else if (o == "either") c->orientation = Orientation::kEither;
+      if (o == "aligned")
+        c->orientation = Orientation::kAligned;
+      else if (o == "opposed")
+        c->orientation = Orientation::kOpposed;
+      else if (o == "either")
+        c->orientation = Orientation::kEither;
       else {
         error(join(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\"");
         vals_ok = false;
@@ -404,8 +421,10 @@ class Parser {
       for (const auto& p : problems) {
         // "field: message" -> path.field: message
         auto colon = p.find(": ");
-        if (colon == std::string::npos) error(path, p);
-        else error(join(path, p.substr(0, colon)), p.substr(colon + 2));
+        if (colon == std::string::npos)
+          error(path, p);
+        else
+          error(join(path, p.substr(0, colon)), p.substr(colon + 2));
         vals_ok = false;
       }
     }
@@ -420,15 +439,18 @@ class Parser {
 
   void document(const json& j, const std::string& default_name) {
     if (!j.is_object()) return error("", "the spec must be a JSON object");
-    unknownFields(j, "", {"relpos", "name", "units", "fixed", "mobile", "obstacles",
-                          "constraints", "plugins"});
+    unknownFields(
+        j, "",
+        {"relpos", "name", "units", "fixed", "mobile", "obstacles", "constraints", "plugins"});
     if (j.contains("relpos") && j["relpos"] != 1)
       error("relpos", "unsupported format version (this relpos reads version 1)");
     Problem pb;
     pb.name = default_name;
     if (j.contains("name")) {
-      if (j["name"].is_string()) pb.name = j["name"].get<std::string>();
-      else error("name", "expected a string");
+      if (j["name"].is_string())
+        pb.name = j["name"].get<std::string>();
+      else
+        error("name", "expected a string");
     }
     if (j.contains("units")) units(j["units"]);
     for (const char* role : {"fixed", "mobile", "constraints"})
@@ -437,7 +459,8 @@ class Parser {
     if (j.contains("mobile")) object(j["mobile"], "mobile", &pb.mobile, true);
     if (j.contains("obstacles")) {
       const json& obs = j["obstacles"];
-      if (!obs.is_array()) error("obstacles", "expected an array");
+      if (!obs.is_array())
+        error("obstacles", "expected an array");
       else
         for (std::size_t i = 0; i < obs.size(); ++i) {
           ObjectSpec o;
@@ -475,8 +498,10 @@ void lineColumn(const std::string& text, std::size_t byte, std::size_t* line, st
   *line = 1;
   *col = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++*line, *col = 1;
-    else ++*col;
+    if (text[i] == '\n')
+      ++*line, *col = 1;
+    else
+      ++*col;
   }
 }
 
@@ -500,7 +525,8 @@ ParseResult parseSpec(const std::string& text, const Registry& registry,
   } catch (const json::exception& e) {  // e.g. a number too large for a double
     std::string what = e.what();
     auto p = what.find("] ");
-    out.errors.push_back({"", "malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2))});
+    out.errors.push_back(
+        {"", "malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2))});
     return out;
   }
   Parser(registry, out).document(j, default_name);

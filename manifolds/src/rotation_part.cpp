@@ -6,11 +6,16 @@ namespace relpos::manifolds {
 
 const char* toString(RotationKind k) {
   switch (k) {
-    case RotationKind::kFixed: return "Fixed";
-    case RotationKind::kOneParallel: return "OneParallel";
-    case RotationKind::kOneAngle: return "OneAngle";
-    case RotationKind::kTwoAngle: return "TwoAngle";
-    case RotationKind::kFree: return "Free";
+    case RotationKind::kFixed:
+      return "Fixed";
+    case RotationKind::kOneParallel:
+      return "OneParallel";
+    case RotationKind::kOneAngle:
+      return "OneAngle";
+    case RotationKind::kTwoAngle:
+      return "TwoAngle";
+    case RotationKind::kFree:
+      return "Free";
   }
   return "?";
 }
@@ -66,11 +71,16 @@ RotationPart RotationPart::free() { return RotationPart{}; }
 
 int RotationPart::dof() const {
   switch (kind) {
-    case RotationKind::kFixed: return 0;
-    case RotationKind::kOneParallel: return 1;
-    case RotationKind::kOneAngle: return 2;
-    case RotationKind::kTwoAngle: return 1;
-    case RotationKind::kFree: return 3;
+    case RotationKind::kFixed:
+      return 0;
+    case RotationKind::kOneParallel:
+      return 1;
+    case RotationKind::kOneAngle:
+      return 2;
+    case RotationKind::kTwoAngle:
+      return 1;
+    case RotationKind::kFree:
+      return 3;
   }
   return 0;
 }
@@ -80,8 +90,12 @@ Parameter RotationPart::parameter(int i) const {
   p.kind = ParamKind::kAngle;
   p.periodic = true;
   switch (kind) {
-    case RotationKind::kOneParallel: p.name = "phi"; break;
-    case RotationKind::kOneAngle: p.name = i == 0 ? "phi" : "theta"; break;
+    case RotationKind::kOneParallel:
+      p.name = "phi";
+      break;
+    case RotationKind::kOneAngle:
+      p.name = i == 0 ? "phi" : "theta";
+      break;
     case RotationKind::kTwoAngle:
       p.name = "phi";
       p.min = phi_lo;
@@ -96,7 +110,8 @@ Parameter RotationPart::parameter(int i) const {
         p.periodic = false;
       }
       break;
-    case RotationKind::kFixed: break;
+    case RotationKind::kFixed:
+      break;
   }
   return p;
 }
@@ -120,9 +135,12 @@ bool twoAngleTheta(const RotationPart& r, double phi, double* theta) {
 
 Matrix3d RotationPart::rotation(const double* t) const {
   switch (kind) {
-    case RotationKind::kFixed: return R0;
-    case RotationKind::kOneParallel: return axisAngle(u_f, t[0]) * R0;
-    case RotationKind::kOneAngle: return axisAngle(u_f, t[0]) * R0 * axisAngle(u_m, t[1]);
+    case RotationKind::kFixed:
+      return R0;
+    case RotationKind::kOneParallel:
+      return axisAngle(u_f, t[0]) * R0;
+    case RotationKind::kOneAngle:
+      return axisAngle(u_f, t[0]) * R0 * axisAngle(u_m, t[1]);
     case RotationKind::kTwoAngle: {
       double theta = 0;
       twoAngleTheta(*this, t[0], &theta);
@@ -137,7 +155,8 @@ Matrix3d RotationPart::rotation(const double* t) const {
 
 void RotationPart::project(const Matrix3d& R, double* t) const {
   switch (kind) {
-    case RotationKind::kFixed: return;
+    case RotationKind::kFixed:
+      return;
     case RotationKind::kOneParallel:
       t[0] = bestAngleAbout(u_f, R0 * R.transpose());
       return;
@@ -170,7 +189,10 @@ void RotationPart::project(const Matrix3d& R, double* t) const {
       const double g = 0.5 * (std::sqrt(5.0) - 1.0);
       for (int it = 0; it < 60; ++it) {
         double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        if (cost(x1) < cost(x2)) b = x2; else a = x1;
+        if (cost(x1) < cost(x2))
+          b = x2;
+        else
+          a = x1;
       }
       double m = 0.5 * (a + b);
       t[0] = cost(m) < best_c ? m : best;

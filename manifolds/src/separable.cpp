@@ -24,8 +24,7 @@ Params SeparableManifold::project(const Isometry3d& X) const {
 }
 
 std::string SeparableManifold::describe() const {
-  return std::string("rotation ") + toString(rot_.kind) + ", translation " +
-         toString(trans_.kind);
+  return std::string("rotation ") + toString(rot_.kind) + ", translation " + toString(trans_.kind);
 }
 
 }  // namespace relpos::manifolds

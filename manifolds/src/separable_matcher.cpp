@@ -166,8 +166,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
 
 // Three angles on right trihedra (App. III-C): R = F R2 Mᵀ with R2 = Rx(θ1) Rz(α) Rx(θ2),
 // cos(θ1 + θ2) = (cβ + cγ)/(1 + cα), cos(θ1 − θ2) = (cγ − cβ)/(1 − cα): up to 8 rotations.
-MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c,
-                        RotationAlternatives& out) {
+MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAlternatives& out) {
   const double tol = 1e-9;
   auto ortho = [&](const Vector3d& x, const Vector3d& y) { return std::abs(x.dot(y)) <= tol; };
   if (!ortho(a.u_m, b.u_m) || !ortho(a.u_m, c.u_m) || !ortho(b.u_m, c.u_m) ||
@@ -330,16 +329,21 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
       case FundamentalKind::kPointLine:
         out.kind = f.value() == 0.0 ? TranslationKind::kLine : TranslationKind::kCylinder;
         return true;
-      case FundamentalKind::kPointPlane: out.kind = TranslationKind::kPlane; return true;
-      case FundamentalKind::kAngle: return false;
+      case FundamentalKind::kPointPlane:
+        out.kind = TranslationKind::kPlane;
+        return true;
+      case FundamentalKind::kAngle:
+        return false;
     }
   }
   if (ts.size() != 2) return false;
   const Fundamental* plane = nullptr;
   const Fundamental* other = nullptr;
   for (int k = 0; k < 2; ++k) {
-    if (ts[k].kind == FundamentalKind::kPointPlane && !plane) plane = &ts[k];
-    else other = &ts[k];
+    if (ts[k].kind == FundamentalKind::kPointPlane && !plane)
+      plane = &ts[k];
+    else
+      other = &ts[k];
   }
   if (!plane || !other) return false;
   out.c2 = *plane;
@@ -347,16 +351,19 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
   switch (other->kind) {
     case FundamentalKind::kPointPlane:
       out.kind = TranslationKind::kLineOfPlanes;
-      return holdsForEveryRotation(*other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
-        return a.cross(b).norm() > tol.angle;  // the planes meet in a line
-      });
+      return holdsForEveryRotation(
+          *other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
+            return a.cross(b).norm() > tol.angle;  // the planes meet in a line
+          });
     case FundamentalKind::kPointLine:
-      out.kind = other->value() == 0.0 ? TranslationKind::kPointOfLinePlane
-                                       : TranslationKind::kEllipse;
-      return holdsForEveryRotation(*other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
-        return std::abs(a.dot(b)) > tol.angle;  // the line (axis) crosses the plane
-      });
-    default: return false;
+      out.kind =
+          other->value() == 0.0 ? TranslationKind::kPointOfLinePlane : TranslationKind::kEllipse;
+      return holdsForEveryRotation(
+          *other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
+            return std::abs(a.dot(b)) > tol.angle;  // the line (axis) crosses the plane
+          });
+    default:
+      return false;
   }
 }
 

@@ -7,15 +7,24 @@ namespace relpos::manifolds {
 
 const char* toString(TranslationKind k) {
   switch (k) {
-    case TranslationKind::kFree: return "R3";
-    case TranslationKind::kPoint: return "Point";
-    case TranslationKind::kLine: return "Line";
-    case TranslationKind::kPlane: return "Plane";
-    case TranslationKind::kSphere: return "Sphere";
-    case TranslationKind::kCylinder: return "Cylinder";
-    case TranslationKind::kLineOfPlanes: return "Line";
-    case TranslationKind::kPointOfLinePlane: return "Point";
-    case TranslationKind::kEllipse: return "Ellipse";
+    case TranslationKind::kFree:
+      return "R3";
+    case TranslationKind::kPoint:
+      return "Point";
+    case TranslationKind::kLine:
+      return "Line";
+    case TranslationKind::kPlane:
+      return "Plane";
+    case TranslationKind::kSphere:
+      return "Sphere";
+    case TranslationKind::kCylinder:
+      return "Cylinder";
+    case TranslationKind::kLineOfPlanes:
+      return "Line";
+    case TranslationKind::kPointOfLinePlane:
+      return "Point";
+    case TranslationKind::kEllipse:
+      return "Ellipse";
   }
   return "?";
 }
@@ -48,15 +57,24 @@ TShape shapeOf(const Fundamental& f, const Matrix3d& R) {
 
 int TranslationPart::dof() const {
   switch (kind) {
-    case TranslationKind::kFree: return 3;
-    case TranslationKind::kPoint: return 0;
-    case TranslationKind::kLine: return 1;
-    case TranslationKind::kPlane: return 2;
-    case TranslationKind::kSphere: return 2;
-    case TranslationKind::kCylinder: return 2;
-    case TranslationKind::kLineOfPlanes: return 1;
-    case TranslationKind::kPointOfLinePlane: return 0;
-    case TranslationKind::kEllipse: return 1;
+    case TranslationKind::kFree:
+      return 3;
+    case TranslationKind::kPoint:
+      return 0;
+    case TranslationKind::kLine:
+      return 1;
+    case TranslationKind::kPlane:
+      return 2;
+    case TranslationKind::kSphere:
+      return 2;
+    case TranslationKind::kCylinder:
+      return 2;
+    case TranslationKind::kLineOfPlanes:
+      return 1;
+    case TranslationKind::kPointOfLinePlane:
+      return 0;
+    case TranslationKind::kEllipse:
+      return 1;
   }
   return 0;
 }
@@ -66,17 +84,25 @@ Parameter TranslationPart::parameter(int i) const {
   Parameter len{"lambda", ParamKind::kLength, -inf, inf, false};
   Parameter ang{"alpha", ParamKind::kAngle, -kPi, kPi, true};
   switch (kind) {
-    case TranslationKind::kFree: len.name = i == 0 ? "x" : (i == 1 ? "y" : "z"); return len;
+    case TranslationKind::kFree:
+      len.name = i == 0 ? "x" : (i == 1 ? "y" : "z");
+      return len;
     case TranslationKind::kLine:
-    case TranslationKind::kLineOfPlanes: return len;
-    case TranslationKind::kPlane: len.name = i == 0 ? "lambda1" : "lambda2"; return len;
+    case TranslationKind::kLineOfPlanes:
+      return len;
+    case TranslationKind::kPlane:
+      len.name = i == 0 ? "lambda1" : "lambda2";
+      return len;
     case TranslationKind::kSphere:
       if (i == 1) return Parameter{"beta", ParamKind::kAngle, 0.0, kPi, false};
       return ang;
-    case TranslationKind::kCylinder: return i == 0 ? len : ang;
-    case TranslationKind::kEllipse: return ang;
+    case TranslationKind::kCylinder:
+      return i == 0 ? len : ang;
+    case TranslationKind::kEllipse:
+      return ang;
     case TranslationKind::kPoint:
-    case TranslationKind::kPointOfLinePlane: break;
+    case TranslationKind::kPointOfLinePlane:
+      break;
   }
   return len;
 }
@@ -101,8 +127,7 @@ Vector3d linePlane(const Vector3d& c, const Vector3d& d, const TShape& plane) {
 
 // The two in-plane axes of the ellipse cut by a cylinder (axis d, radius r) from a plane
 // (normal n): e1 ⊥ d and n, e2 = n × e1, semi-axes r and r / |d·n| (PMF eq. 10).
-void ellipseAxes(const TShape& cyl, const TShape& plane, Vector3d* e1, Vector3d* e2,
-                 double* b) {
+void ellipseAxes(const TShape& cyl, const TShape& plane, Vector3d* e1, Vector3d* e2, double* b) {
   Vector3d w = plane.d.cross(cyl.d);
   *e1 = w.norm() > 1e-12 ? Vector3d(w.normalized()) : cyl.e1;
   *e2 = plane.d.cross(*e1);
@@ -116,12 +141,15 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
   const TShape s = shapeOf(c1, R);
   const Vector3d e2 = s.d.cross(s.e1);
   switch (kind) {
-    case TranslationKind::kPoint: return s.c;
-    case TranslationKind::kLine: return s.c + t[0] * s.d;
-    case TranslationKind::kPlane: return s.c + t[0] * s.e1 + t[1] * e2;
+    case TranslationKind::kPoint:
+      return s.c;
+    case TranslationKind::kLine:
+      return s.c + t[0] * s.d;
+    case TranslationKind::kPlane:
+      return s.c + t[0] * s.e1 + t[1] * e2;
     case TranslationKind::kSphere:
-      return s.c + s.r * Vector3d(std::cos(t[0]) * std::sin(t[1]),
-                                  std::sin(t[0]) * std::sin(t[1]), std::cos(t[1]));
+      return s.c + s.r * Vector3d(std::cos(t[0]) * std::sin(t[1]), std::sin(t[0]) * std::sin(t[1]),
+                                  std::cos(t[1]));
     case TranslationKind::kCylinder:
       return s.c + t[0] * s.d + s.r * (std::cos(t[1]) * s.e1 + std::sin(t[1]) * e2);
     case TranslationKind::kLineOfPlanes: {
@@ -129,7 +157,8 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
       planePlane(s, shapeOf(c2, R), &p, &d);
       return p + t[0] * d;
     }
-    case TranslationKind::kPointOfLinePlane: return linePlane(s.c, s.d, shapeOf(c2, R));
+    case TranslationKind::kPointOfLinePlane:
+      return linePlane(s.c, s.d, shapeOf(c2, R));
     case TranslationKind::kEllipse: {
       const TShape pl = shapeOf(c2, R);
       Vector3d a1, a2;
@@ -137,7 +166,8 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
       ellipseAxes(s, pl, &a1, &a2, &b);
       return linePlane(s.c, s.d, pl) + s.r * std::cos(t[0]) * a1 + b * std::sin(t[0]) * a2;
     }
-    case TranslationKind::kFree: break;
+    case TranslationKind::kFree:
+      break;
   }
   return Vector3d::Zero();
 }
@@ -151,8 +181,12 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
   const Vector3d e2 = s.d.cross(s.e1);
   const Vector3d v = T - s.c;
   switch (kind) {
-    case TranslationKind::kLine: t[0] = v.dot(s.d); return;
-    case TranslationKind::kPlane: t[0] = v.dot(s.e1), t[1] = v.dot(e2); return;
+    case TranslationKind::kLine:
+      t[0] = v.dot(s.d);
+      return;
+    case TranslationKind::kPlane:
+      t[0] = v.dot(s.e1), t[1] = v.dot(e2);
+      return;
     case TranslationKind::kSphere:
       if (v.norm() < 1e-300) {
         t[0] = t[1] = 0.0;
@@ -182,7 +216,8 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     }
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
-    case TranslationKind::kFree: return;
+    case TranslationKind::kFree:
+      return;
   }
 }
 

@@ -60,14 +60,16 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
     if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = 0;
     if (sf <= tol.angle) {
       if (tol.equalAngle(a.a, b.a)) return out.fire(kSameVector).redundantSecond();
-      return out.fire(kIncompatible).incompatible(
-          "one direction at two different angles from the same direction (PMF App. IV Table X)");
+      return out.fire(kIncompatible)
+          .incompatible(
+              "one direction at two different angles from the same direction (PMF App. IV Table "
+              "X)");
     }
     Vector3d s[2];
     const int n = sPlusMinus(a.f, b.f, a.a, b.a, tol, s);
     if (n == 0)
-      return out.fire(kIncompatible).incompatible(
-          "no direction makes both angles (PMF App. IV Table X, row 1)");
+      return out.fire(kIncompatible)
+          .incompatible("no direction makes both angles (PMF App. IV Table X, row 1)");
     out.fire(kTwoCones);
     for (int k = 0; k < n; ++k) one(out, Fundamental::angle(a.m, s[k], 0.0, 0));
     return;
@@ -76,9 +78,10 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
   if (pa && pb) {
     // Two parallelisms: the mobile and fixed vectors must form the same angle (rigid rotation).
     if (!tol.equalAngle(sm, angleBetween(a.f, b.f)))
-      return out.fire(kIncompatible).incompatible(
-          "two parallelisms whose mobile vectors and fixed vectors form different angles (PMF "
-          "App. IV Table X, row 1)");
+      return out.fire(kIncompatible)
+          .incompatible(
+              "two parallelisms whose mobile vectors and fixed vectors form different angles (PMF "
+              "App. IV Table X, row 1)");
     return;  // Table III row 1 solves it
   }
   if (!pa && !pb) return;  // App. III-D two-angle rotation
@@ -94,16 +97,18 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
       out.fire(kParallelFixes);
       return pa ? out.redundantSecond() : out.redundantFirst();
     }
-    return out.fire(kIncompatible).incompatible(
-        "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
-        "Table X)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
+            "Table X)");
   }
   Vector3d s[2];
   const int n = sPlusMinus(par.f, ang.f, sm, ang.a, tol, s);
   if (n == 0)
-    return out.fire(kIncompatible).incompatible(
-        "a parallelism and an angle that no rotation satisfies together (PMF App. IV Table X, "
-        "row 1)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "a parallelism and an angle that no rotation satisfies together (PMF App. IV Table X, "
+            "row 1)");
   out.fire(kParallelAndAngle);
   for (int k = 0; k < n; ++k) {
     Alt& alt = out.addAlternative();
@@ -115,13 +120,14 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
 }  // namespace
 
 void registerAngleRules(Registry& r) {
-  addFamily(r, "angle+angle", "PMF App. IV Table X", FundamentalKind::kAngle,
-            FundamentalKind::kAngle, &twoAngles,
-            {{"angle+angle/incompatible", "PMF App. IV Table X, row 1"},
-             {"angle+angle/same-vector", "PMF App. IV Table X, row 2 (σ_a = σ_b = nπ, α = β)"},
-             {"angle+angle/two-cones", "PMF App. IV Table X, row 7 (σ_a = 0): s± of App. II"},
-             {"angle+angle/parallel-fixes-angle", "PMF App. IV Table X (β = 0, σ_b = nπ)"},
-             {"angle+angle/parallel-and-angle", "PMF App. IV Table X, row 8 (β = 0): s± of App. II"}});
+  addFamily(
+      r, "angle+angle", "PMF App. IV Table X", FundamentalKind::kAngle, FundamentalKind::kAngle,
+      &twoAngles,
+      {{"angle+angle/incompatible", "PMF App. IV Table X, row 1"},
+       {"angle+angle/same-vector", "PMF App. IV Table X, row 2 (σ_a = σ_b = nπ, α = β)"},
+       {"angle+angle/two-cones", "PMF App. IV Table X, row 7 (σ_a = 0): s± of App. II"},
+       {"angle+angle/parallel-fixes-angle", "PMF App. IV Table X (β = 0, σ_b = nπ)"},
+       {"angle+angle/parallel-and-angle", "PMF App. IV Table X, row 8 (β = 0): s± of App. II"}});
 }
 
 }  // namespace relpos::rules

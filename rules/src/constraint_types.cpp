@@ -15,8 +15,8 @@ bool isPointKind(K k) { return k == K::kPoint; }
 
 // Adds the rotational part of "directions parallel per orientation": one alternative per allowed
 // orientation (aligned: angle 0, opposed: angle π). Each alternative receives `extra` too.
-void parallelAlternatives(Orientation o, const Vector3d& u_m, const Vector3d& u_f,
-                          SourceMask s, const Fundamental* extra, Decomposition& out) {
+void parallelAlternatives(Orientation o, const Vector3d& u_m, const Vector3d& u_f, SourceMask s,
+                          const Fundamental* extra, Decomposition& out) {
   if (o != Orientation::kOpposed) {
     Alt& a = out.addAlternative();
     a.push_back(Fundamental::angle(u_m, u_f, 0.0, s));
@@ -43,12 +43,15 @@ Fundamental pointDistance(const Feature& F, const Feature& M, double v, SourceMa
   const Feature& X = point_mobile ? F : M;
   const Side side = point_mobile ? Side::kMobile : Side::kFixed;
   switch (X.kind) {
-    case K::kPoint: return Fundamental::pointPoint(M.point, F.point, v, s);
-    case K::kLine: return Fundamental::pointLine(side, P.point, X.point, X.direction, v, s);
+    case K::kPoint:
+      return Fundamental::pointPoint(M.point, F.point, v, s);
+    case K::kLine:
+      return Fundamental::pointLine(side, P.point, X.point, X.direction, v, s);
     case K::kCylinder:  // point on a cylinder: distance to its axis (SPEC coincident)
       return Fundamental::pointLine(side, P.point, X.point, X.direction, v, s);
     case K::kPlane:
-    default: return Fundamental::pointPlane(side, P.point, X.point, X.direction, v, s);
+    default:
+      return Fundamental::pointPlane(side, P.point, X.point, X.direction, v, s);
   }
 }
 
@@ -92,8 +95,7 @@ void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s,
   pair(out, onOffsetPlane(F, M, v, s), Fundamental::angle(u_m, u_f, kPi / 2, s));
 }
 
-void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s,
-                    Decomposition& out) {
+void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out) {
   if (c.isRange()) {
     out.unhandled = "angle ranges (min/max) are not solved yet";
     return;
@@ -191,11 +193,13 @@ void checkAngle(const InputConstraint& c, std::vector<std::string>& problems) {
   const char* range = line_plane ? "[-pi/2, pi/2]" : "[0, pi]";
   auto check = [&](const char* field, double v) {
     if (std::isfinite(v) && (v < lo - 1e-12 || v > hi + 1e-12))
-      problems.push_back(std::string(field) + ": angle " + std::to_string(v) +
-                         " rad is outside " + range);
+      problems.push_back(std::string(field) + ": angle " + std::to_string(v) + " rad is outside " +
+                         range);
   };
-  if (c.has_value) check("value", c.value);
-  else check("min", c.min), check("max", c.max);
+  if (c.has_value)
+    check("value", c.value);
+  else
+    check("min", c.min), check("max", c.max);
 }
 
 std::vector<FeaturePair> pairs(std::initializer_list<FeaturePair> l) { return l; }
@@ -207,8 +211,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   ConstraintType t;
   t.name = "distance";
   t.description = "distance between point/line/plane features (PMF Table I)";
-  t.accepts = pairs({{P, P}, {P, L}, {L, P}, {P, Pl}, {Pl, P}, {L, L}, {L, Pl}, {Pl, L},
-                     {Pl, Pl}});
+  t.accepts = pairs({{P, P}, {P, L}, {L, P}, {P, Pl}, {Pl, P}, {L, L}, {L, Pl}, {Pl, L}, {Pl, Pl}});
   t.takes_value = true;
   t.check = &checkDistance;
   t.decompose = &decomposeDistance;
@@ -226,8 +229,17 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t = ConstraintType{};
   t.name = "coincident";
   t.description = "coincidence / containment (distance 0; point on cylinder: distance r to axis)";
-  t.accepts = pairs({{P, P}, {P, L}, {L, P}, {P, Pl}, {Pl, P}, {L, L}, {L, Pl}, {Pl, L},
-                     {Pl, Pl}, {P, C}, {C, P}});
+  t.accepts = pairs({{P, P},
+                     {P, L},
+                     {L, P},
+                     {P, Pl},
+                     {Pl, P},
+                     {L, L},
+                     {L, Pl},
+                     {Pl, L},
+                     {Pl, Pl},
+                     {P, C},
+                     {C, P}});
   t.decompose = &decomposeCoincident;
   r.addConstraintType(t);
 

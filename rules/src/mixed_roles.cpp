@@ -14,8 +14,8 @@ enum Case { kPointsOrLines };
 
 // `x` = d(P_a, K_b) = 0 (point side a), `y` = Q_b on a's line or plane (point side b).
 // Returns P_a, Q_b and the direction / normal of a's element in a common reading.
-void pointsOrLines(const Fundamental& x, const Fundamental& y, bool plane,
-                   const Tolerance& tol, RuleOutput& out) {
+void pointsOrLines(const Fundamental& x, const Fundamental& y, bool plane, const Tolerance& tol,
+                   RuleOutput& out) {
   if (sameRoles(x, y) || !tol.zeroLength(x.value()) || !tol.zeroLength(y.value())) return;
   // P_a = x.p lies on a's element (y.q, y.d)?  Q_b = y.p lies on K_b = (x.q, x.d)?
   const Vector3d w = x.p - y.q;

@@ -26,8 +26,10 @@ const char* kSamePoint = "a pinned point that violates another constraint on the
 void impliedOrIncompatible(bool holds, RuleOutput& out, bool drop_first = false) {
   if (!holds) return out.fire(kIncompatible).incompatible(kSamePoint);
   out.fire(kImplied);
-  if (drop_first) out.redundantFirst();
-  else out.redundantSecond();
+  if (drop_first)
+    out.redundantFirst();
+  else
+    out.redundantSecond();
 }
 
 // Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(num / den)}.
@@ -45,7 +47,8 @@ void pinSinCone(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f
   if (num > den + tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
   const double a = std::asin(std::min(1.0, num / den));
   out.fire(kCone);
-  if (std::abs(a - kPi / 2) <= tol.angle) return two(out, pin, Fundamental::angle(u_m, w_f, kPi / 2, 0));
+  if (std::abs(a - kPi / 2) <= tol.angle)
+    return two(out, pin, Fundamental::angle(u_m, w_f, kPi / 2, 0));
   two(out, pin, Fundamental::angle(u_m, w_f, a, 0));
   two(out, pin, Fundamental::angle(u_m, w_f, kPi - a, 0));
 }

@@ -23,7 +23,8 @@ enum Case {
   kCollinear,
 };
 
-const char* kNoPose = "two point-line distances that no pose satisfies (PMF App. IV Table III, row 1)";
+const char* kNoPose =
+    "two point-line distances that no pose satisfies (PMF App. IV Table III, row 1)";
 
 // Points of line (c, d) at distance q from the other line, which it crosses at angle θ with the
 // common perpendicular's foot `foot` and length db: |x(t) − L| = sqrt(db² + t² sin²θ). (Derived
@@ -39,8 +40,7 @@ void pointsOnLineAtDistance(const Fundamental& a, const Vector3d& foot, const Ve
   one(out, pinPoint(a, foot - t * d));
 }
 
-void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-               RuleOutput& out) {
+void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol, RuleOutput& out) {
   const double p = a.value(), q = b.value();
   const double sin_theta = a.d.cross(b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
@@ -59,7 +59,8 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     const double k1 = (db * db + p * p - q * q) / (2 * db);
     const double k2sq = p * p - k1 * k1;
     out.fire(kParallelCylinders);
-    if (k2sq <= 2 * tol.length * std::max(1.0, p)) return one(out, onLine(a, a.q + k1 * u_b, a.d, 0));
+    if (k2sq <= 2 * tol.length * std::max(1.0, p))
+      return one(out, onLine(a, a.q + k1 * u_b, a.d, 0));
     const double k2 = std::sqrt(k2sq);
     one(out, onLine(a, a.q + k1 * u_b + k2 * v_b, a.d, 0));
     one(out, onLine(a, a.q + k1 * u_b - k2 * v_b, a.d, 0));
@@ -80,8 +81,8 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     return one(out.fire(kSkewTangent), pinPoint(a, f1 + (p / db) * (f2 - f1)));
 }
 
-void differentPoints(const Fundamental& a, const Fundamental& b, double da,
-                     const Tolerance& tol, RuleOutput& out) {
+void differentPoints(const Fundamental& a, const Fundamental& b, double da, const Tolerance& tol,
+                     RuleOutput& out) {
   const double p = a.value(), q = b.value();
   const Vector3d u_a = (b.p - a.p) / da;
   const Side side = a.point_side;
@@ -111,7 +112,8 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da,
       if (r > da + tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       const double alpha = std::asin(std::min(1.0, r / da));
       out.fire(kNearOwnLine);
-      if (std::abs(alpha - kPi / 2) <= tol.angle) return two(out, on, angleAB(side, u_a, a.d, kPi / 2));
+      if (std::abs(alpha - kPi / 2) <= tol.angle)
+        return two(out, on, angleAB(side, u_a, a.d, kPi / 2));
       two(out, on, angleAB(side, u_a, a.d, alpha));
       two(out, on, angleAB(side, u_a, a.d, kPi - alpha));
       return;

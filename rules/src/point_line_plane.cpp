@@ -31,9 +31,11 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   const double h = (pl.q - pp.q).dot(n);
   const double db = std::abs(h);
   if (db - da > p + tol.length)
-    return out.fire(kIncompatible).incompatible(
-        "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. IV "
-        "Table VI, row 1)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "
+            "IV "
+            "Table VI, row 1)");
   const Vector3d foot = pl.q - h * n;  // the line's shadow on the plane passes through here
   if (da <= tol.length) {
     // One point: the cylinder about K_b cuts the plane in one or two lines ∥ K_b.

@@ -29,14 +29,16 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   const double db = (b.q - a.q).dot(n);  // signed distance from Σ to Π along Σ's normal
   if (da <= tol.length) {
     if (std::abs(db) <= tol.length) return out.fire(kSamePlane).redundantSecond();  // Fig. 3b
-    return out.fire(kIncompatible).incompatible(
-        "one point on two distinct parallel planes (PMF App. IV Table VII)");
+    return out.fire(kIncompatible)
+        .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }
   double alpha;
   if (!acosChecked(db, da, tol.length, &alpha))  // Fig. 3a: d_a < d_b
-    return out.fire(kIncompatible).incompatible(
-        "two points closer together than the distance between the parallel planes they must lie "
-        "on (PMF App. IV Table VII, Fig. 3a)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "two points closer together than the distance between the parallel planes they must "
+            "lie "
+            "on (PMF App. IV Table VII, Fig. 3a)");
   // Fig. 3d: the implicit rotation ∠(u_a, n) = acos(d_b / d_a) makes Q's plane follow from P's.
   const Vector3d u_a = (b.p - a.p) / da;
   two(out.fire(kParallelSpan), a, angleAB(a.point_side, u_a, n, alpha));

@@ -18,8 +18,9 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
   const double da = (b.p - a.p).norm(), db = (b.q - a.q).norm();
   const double eps = tol.length;
   if (da + db < std::abs(p - q) - eps || std::abs(db - da) > p + q + eps)
-    return out.fire(kIncompatible).incompatible(
-        "two point-point distances that no pose satisfies (PMF App. IV Table I, row 1)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "two point-point distances that no pose satisfies (PMF App. IV Table I, row 1)");
   const bool za = da <= eps, zb = db <= eps;
   if (za && zb) return out.fire(kSamePoints).redundantSecond();  // p = q, else row 1
   if (zb) return;  // two points about one centre: no single-constraint rule
@@ -44,7 +45,8 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
   // Rows 3 and 6: the extreme configurations put all four points on one line.
   if (tol.equalLength(da + db, std::abs(p - q)) && !tol.zeroLength(p - q)) {
     const double s = p > q ? 1.0 : -1.0;
-    return two(out.fire(kCollinear), pinPoint(a, a.q + s * p * u_b), pinPoint(b, b.q + s * q * u_b));
+    return two(out.fire(kCollinear), pinPoint(a, a.q + s * p * u_b),
+               pinPoint(b, b.q + s * q * u_b));
   }
   if (tol.equalLength(db - da, p + q))
     return two(out.fire(kCollinear), pinPoint(a, a.q + p * u_b), pinPoint(b, b.q - q * u_b));

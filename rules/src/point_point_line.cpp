@@ -12,7 +12,14 @@ namespace relpos::rules {
 namespace {
 using namespace detail;
 
-enum Case { kIncompatible, kCirclesAboutAxis, kSphereMeetsLine, kTangent, kCollinear, kExtremeOnAxis };
+enum Case {
+  kIncompatible,
+  kCirclesAboutAxis,
+  kSphereMeetsLine,
+  kTangent,
+  kCollinear,
+  kExtremeOnAxis
+};
 
 void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const Tolerance& tol,
                             RuleOutput& out) {
@@ -26,9 +33,10 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
   const double da = (Q_a - P_a).norm(), db = (Q_b - P_b).norm();
   const double eps = tol.length;
   if (db - da > p + q + eps || da + db < q - p - eps)
-    return out.fire(kIncompatible).incompatible(
-        "a point-point and a point-line distance that no pose satisfies (PMF App. IV Table II, "
-        "row 1)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "a point-point and a point-line distance that no pose satisfies (PMF App. IV Table II, "
+            "row 1)");
   const bool za = da <= eps, zb = db <= eps;
   // One point: on a sphere about P_b and a cylinder about L_b.
   if (za && zb && !tol.zeroLength(q)) {
@@ -75,14 +83,15 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
 }  // namespace
 
 void registerPointPointLineRules(Registry& r) {
-  addFamily(r, "pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint,
-            FundamentalKind::kPointLine, &pointPointAndPointLine,
-            {{"pp+pl/incompatible", "PMF App. IV Table II, row 1"},
-             {"pp+pl/circles-about-axis", "PMF App. IV Table II, rows 3 and 4 (p >= q, d_a = d_b = 0)"},
-             {"pp+pl/sphere-meets-line", "PMF App. IV Table II, row 11 (d_b < p, d_a = 0, q = 0)"},
-             {"pp+pl/tangent", "PMF App. IV Table II, rows 8 and 9 (d_a = 0)"},
-             {"pp+pl/collinear", "PMF App. IV Table II, rows 7 and 10 (d_a, d_b ≠ 0)"},
-             {"pp+pl/extreme-on-axis", "PMF App. IV Table II, row 6 (d_a = q − p, d_b = 0)"}});
+  addFamily(
+      r, "pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
+      &pointPointAndPointLine,
+      {{"pp+pl/incompatible", "PMF App. IV Table II, row 1"},
+       {"pp+pl/circles-about-axis", "PMF App. IV Table II, rows 3 and 4 (p >= q, d_a = d_b = 0)"},
+       {"pp+pl/sphere-meets-line", "PMF App. IV Table II, row 11 (d_b < p, d_a = 0, q = 0)"},
+       {"pp+pl/tangent", "PMF App. IV Table II, rows 8 and 9 (d_a = 0)"},
+       {"pp+pl/collinear", "PMF App. IV Table II, rows 7 and 10 (d_a, d_b ≠ 0)"},
+       {"pp+pl/extreme-on-axis", "PMF App. IV Table II, row 6 (d_a = q − p, d_b = 0)"}});
 }
 
 }  // namespace relpos::rules

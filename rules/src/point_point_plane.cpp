@@ -25,9 +25,10 @@ void pointPointAndPointPlane(const Fundamental& pp, const Fundamental& pl, const
   const Vector3d Q_b = P_b - h * pl.d;
   const double da = (Q_a - P_a).norm(), db = std::abs(h);
   if (db - da > p + tol.length)
-    return out.fire(kIncompatible).incompatible(
-        "a point-point distance and a point-plane coincidence that no pose satisfies (PMF App. "
-        "IV Table V, row 1)");
+    return out.fire(kIncompatible)
+        .incompatible(
+            "a point-point distance and a point-plane coincidence that no pose satisfies (PMF App. "
+            "IV Table V, row 1)");
   if (da <= tol.length) {
     // One point on a sphere and a plane: the circle about the normal through P_b, or the tangent
     // point.

@@ -1,7 +1,8 @@
+#include "relpos/core/geometry.hpp"
+
 #include <gtest/gtest.h>
 
 #include "random_problems.hpp"
-#include "relpos/core/geometry.hpp"
 
 namespace relpos::test {
 namespace {

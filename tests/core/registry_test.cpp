@@ -1,6 +1,6 @@
-#include <set>
-
 #include <gtest/gtest.h>
+
+#include <set>
 
 #include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
@@ -47,7 +47,8 @@ TEST(Registry, EveryRuleCaseHasAUniqueNameAndACitation) {
     EXPECT_FALSE(rule.name.empty());
     EXPECT_NE(rule.citation.find("PMF"), std::string::npos) << rule.name;
     for (const auto& c : rule.cases) {
-      EXPECT_EQ(c.name.rfind(rule.name + "/", 0), 0u) << c.name << " is not in family " << rule.name;
+      EXPECT_EQ(c.name.rfind(rule.name + "/", 0), 0u)
+          << c.name << " is not in family " << rule.name;
       EXPECT_NE(c.citation.find("PMF"), std::string::npos) << c.name;
       EXPECT_TRUE(names.insert(c.name).second) << "duplicate case " << c.name;
     }

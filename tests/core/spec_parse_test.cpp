@@ -81,11 +81,11 @@ TEST(SpecParse, PoseForms) {
   ASSERT_TRUE(q.problem);
   EXPECT_TRUE((q.problem->fixed.pose.linear() * Vector3d::UnitX()).isApprox(Vector3d::UnitY()));
   EXPECT_TRUE(q.problem->fixed.pose.translation().isApprox(Vector3d(1, 2, 3)));
-  ParseResult m = parse(withPose(
-      R"({"matrix": [[0, -1, 0, 5], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"));
+  ParseResult m =
+      parse(withPose(R"({"matrix": [[0, -1, 0, 5], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"));
   ASSERT_TRUE(m.problem);
   EXPECT_TRUE(m.problem->fixed.pose.isApprox(q.problem->fixed.pose.linear() *
-                                              Isometry3d(Eigen::Translation3d(0, -5, 0))) ||
+                                             Isometry3d(Eigen::Translation3d(0, -5, 0))) ||
               m.problem->fixed.pose.translation().isApprox(Vector3d(5, 0, 0)));
   expectError(withPose(R"({"orientation": [0, 0, 0, 0]})"), "fixed.pose.orientation",
               "zero quaternion");
@@ -160,8 +160,8 @@ TEST(SpecParse, ValueProblems) {
   expectError(spec(R"({"type": "parallel", "fixed": "K", "mobile": "ax", "orientation": "up"})"),
               "constraints[0].orientation", "expected");
   // Signed distances may be negative.
-  EXPECT_TRUE(parse(spec(R"({"type": "distance", "fixed": "Pl", "mobile": "tcp", "value": -1})"))
-                  .problem);
+  EXPECT_TRUE(
+      parse(spec(R"({"type": "distance", "fixed": "Pl", "mobile": "tcp", "value": -1})")).problem);
 }
 
 TEST(SpecParse, RangesAndSkewParse) {
@@ -177,8 +177,8 @@ TEST(SpecParse, RangesAndSkewParse) {
 }
 
 TEST(SpecParse, ConstraintIdIsEchoed) {
-  ParseResult r = parse(
-      spec(R"({"type": "coincident", "fixed": "K", "mobile": "nope", "id": "grasp-1"})"));
+  ParseResult r =
+      parse(spec(R"({"type": "coincident", "fixed": "K", "mobile": "nope", "id": "grasp-1"})"));
   ASSERT_EQ(r.errors.size(), 1u);
   EXPECT_NE(r.errors[0].message.find("(constraint id 'grasp-1')"), std::string::npos)
       << r.errors[0].message;

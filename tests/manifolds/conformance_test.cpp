@@ -2,9 +2,9 @@
 // branch of every example and of random single-constraint problems — passes the same property
 // checks: poses are rigid, pose(project(pose(θ))) == pose(θ), contains() holds on the manifold,
 // parameters are well formed and respected, nearest is never worse than the projection.
-#include <filesystem>
-
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -83,8 +83,8 @@ TEST(ManifoldConformance, RandomSingleConstraintBranches) {
 }
 
 TEST(ManifoldConformance, BranchesCopyWithTheirManifold) {
-  ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json",
-                                builtinRegistry());
+  ParseResult r =
+      parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json", builtinRegistry());
   Solution s = solve(*r.problem, builtinRegistry());
   ASSERT_EQ(s.branches.size(), 1u);
   Branch copy = s.branches[0];

@@ -1,10 +1,11 @@
 // Rotation parts checked against their defining constraints, independently of the matcher.
-#include <cmath>
+#include "relpos/manifolds/rotation_part.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "random_problems.hpp"
-#include "relpos/manifolds/rotation_part.hpp"
 
 namespace relpos::test {
 namespace {
@@ -94,8 +95,8 @@ TEST(TwoAngleRotation, DegenerateSpinCircleIsPartOfTheSolution) {
     for (double t : {0.0, 0.4, 1.9, -2.5}) {
       Isometry3d X = pose(axis, t);
       ASSERT_LT(worstViolation(p, X), 1e-12);
-      EXPECT_TRUE(someBranchContains(s, X))
-          << "spin " << t << " about " << axis.transpose() << "\n" << describeBranches(s);
+      EXPECT_TRUE(someBranchContains(s, X)) << "spin " << t << " about " << axis.transpose() << "\n"
+                                            << describeBranches(s);
     }
   std::string where;
   EXPECT_LT(worstSampledViolation(p, s, 300, 5, &where), 1e-9) << where;

@@ -2,19 +2,18 @@
 // known pose satisfies, a rule never answers "incompatible", never drops a constraint the known
 // pose needs, and the known pose satisfies one of its replacement sets. And every registered rule
 // fires on some covering problem.
+#include <gtest/gtest.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "fundamental_eval.hpp"
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
-
-#include <filesystem>
 
 namespace relpos::test {
 namespace {
@@ -75,8 +74,8 @@ bool outputImpliesInputs(const std::vector<Fundamental>& output, const Fundament
       Isometry3d X = br.manifold->pose(sampleParams(*br.manifold, rng));
       const double ra = fundamentalResidual(a, X), rb = fundamentalResidual(b, X);
       if (ra > 1e-6 || rb > 1e-6) {
-        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " +
-               std::to_string(ra) + ", " + std::to_string(rb);
+        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " + std::to_string(ra) +
+               ", " + std::to_string(rb);
         return true;
       }
     }
@@ -131,12 +130,14 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
           for (const auto& alt : out.alternatives) {
             std::vector<Fundamental> fs(alt.begin(), alt.end());
             if (outputImpliesInputs(fs, a, b, tol, sampler, &bad)) ++checked_converse;
-            EXPECT_TRUE(bad.empty()) << "a replacement set admits a pose violating the pair: " << bad;
+            EXPECT_TRUE(bad.empty())
+                << "a replacement set admits a pose violating the pair: " << bad;
           }
           bool some = false;
           for (const auto& alt : out.alternatives) {
             bool all = true;
-            for (const Fundamental& f : alt) all = all && fundamentalResidual(f, kp.X_WM_star) < 1e-6;
+            for (const Fundamental& f : alt)
+              all = all && fundamentalResidual(f, kp.X_WM_star) < 1e-6;
             some = some || all;
           }
           EXPECT_TRUE(some) << "the known pose satisfies no replacement set";
@@ -145,7 +146,8 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
   }
   for (const std::string& name : allCaseNames())
     if (fired[name] == 0) std::printf("[property test] never fired: %s\n", name.c_str());
-  std::printf("[property test] output-implies-input checked on %d rule outputs\n", checked_converse);
+  std::printf("[property test] output-implies-input checked on %d rule outputs\n",
+              checked_converse);
   EXPECT_GT(checked_converse, 500);
 }
 

@@ -97,7 +97,8 @@ TEST(Decomposition, LooserToleranceAcceptsRoundedData) {
   p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
       .addFixedFeature("D", Feature::makeLine({0, 0, 0}, {0.707107, 0.707107, 0}))
       .addMobileFeature("x", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
-      .addMobileFeature("d", Feature::makeLine({0, 0, 0}, {0.7071067811865476, 0.7071067811865476 + 2e-7, 0}));
+      .addMobileFeature(
+          "d", Feature::makeLine({0, 0, 0}, {0.7071067811865476, 0.7071067811865476 + 2e-7, 0}));
   p.addConstraint("parallel", "X", "x").addConstraint("parallel", "D", "d");
   EXPECT_EQ(solve(p, builtinRegistry()).status, Status::kInconsistent);
   SolverOptions loose;

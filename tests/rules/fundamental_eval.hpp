@@ -11,13 +11,16 @@ inline double fundamentalResidual(const Fundamental& f, const Isometry3d& X) {
   const Matrix3d R = X.linear();
   const Vector3d T = X.translation();
   const bool pm = f.point_side == Side::kMobile;
-  const Vector3d p = pm ? Vector3d(R * f.p + T) : f.p;          // the point, in world
-  const Vector3d q = pm ? f.q : Vector3d(R * f.q + T);          // the other element's point
-  const Vector3d d = pm ? f.d : Vector3d(R * f.d);              // its direction / normal
+  const Vector3d p = pm ? Vector3d(R * f.p + T) : f.p;  // the point, in world
+  const Vector3d q = pm ? f.q : Vector3d(R * f.q + T);  // the other element's point
+  const Vector3d d = pm ? f.d : Vector3d(R * f.d);      // its direction / normal
   switch (f.kind) {
-    case FundamentalKind::kPointPoint: return std::abs((p - q).norm() - f.value());
-    case FundamentalKind::kPointLine: return std::abs((p - q).cross(d).norm() - f.value());
-    case FundamentalKind::kPointPlane: return std::abs((p - q).dot(d) - f.value());
+    case FundamentalKind::kPointPoint:
+      return std::abs((p - q).norm() - f.value());
+    case FundamentalKind::kPointLine:
+      return std::abs((p - q).cross(d).norm() - f.value());
+    case FundamentalKind::kPointPlane:
+      return std::abs((p - q).dot(d) - f.value());
     case FundamentalKind::kAngle: {
       const Vector3d u = R * f.p;
       return std::abs(std::atan2(u.cross(f.q).norm(), u.dot(f.q)) - f.value());

@@ -1,10 +1,10 @@
 // Repeated solves into a reused Workspace and Solution allocate nothing (ARCHITECTURE.md "Hot
 // path"). Counts every global operator new while solving.
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
-
-#include <gtest/gtest.h>
 
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -57,7 +57,7 @@ TEST(Allocation, RepeatedSolvesOfUpToEightConstraintsAllocateNothing) {
                     k && trial % 3 ? &shared : nullptr);
       if (k == 0) shared = kp.problem.mobile.features.back();
     }
-    allocationsDuring(kp.problem, ws, s);  // warm-up: buffers reach their working size
+    allocationsDuring(kp.problem, ws, s);          // warm-up: buffers reach their working size
     if (s.status == Status::kUnhandled) continue;  // messages for unhandled may allocate
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + s.briefReport());
     EXPECT_EQ(allocationsDuring(kp.problem, ws, s), 0);
@@ -67,8 +67,8 @@ TEST(Allocation, RepeatedSolvesOfUpToEightConstraintsAllocateNothing) {
 }
 
 TEST(Allocation, WorkedExampleAllocatesNothingAfterWarmUp) {
-  ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json",
-                                builtinRegistry());
+  ParseResult r =
+      parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json", builtinRegistry());
   ASSERT_TRUE(r.problem);
   Workspace ws;
   Solution s;

@@ -1,9 +1,9 @@
 // Permuting the input constraints gives the same solution set: same status, the same number of
 // branches with the same DOF, and every sampled pose of one answer lies on a branch of the other.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <numeric>
-
-#include <gtest/gtest.h>
 
 #include "random_problems.hpp"
 #include "solve_helpers.hpp"

@@ -3,11 +3,11 @@
 // axis-aligned integer geometry. A correct solver may answer `unhandled` (the PMF rule set is not
 // complete) but never `inconsistent`, never a branch with a violating pose, and a `solved` answer
 // must contain the known pose.
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-
-#include <gtest/gtest.h>
 
 #include "evaluator.hpp"
 #include "local_dof.hpp"
@@ -127,8 +127,8 @@ void runFamily(const std::vector<int>& family, bool grid, bool share, int trials
     checkKnown(kp, seed + t, tally);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  std::printf("[%s grid=%d size=%d] solved %d of %d (%.1f%%), DOF checked %d\n", label, grid,
-              size, tally.solved, trials, 100.0 * tally.solved / trials, tally.dof_checked);
+  std::printf("[%s grid=%d size=%d] solved %d of %d (%.1f%%), DOF checked %d\n", label, grid, size,
+              tally.solved, trials, 100.0 * tally.solved / trials, tally.dof_checked);
 }
 
 std::vector<int> kindsWhere(bool (*pred)(const SingleKind&)) {
@@ -152,8 +152,7 @@ TEST(RandomFamilies, RotationalOnly) {
     return t == "angle" || t == "parallel" || t == "perpendicular";
   });
   for (bool grid : {false, true})
-    for (int size : {2, 3})
-      runFamily(fam, grid, false, 150, size, 200 + size + grid, "rotational");
+    for (int size : {2, 3}) runFamily(fam, grid, false, 150, size, 200 + size + grid, "rotational");
 }
 
 }  // namespace

@@ -11,8 +11,8 @@ namespace relpos::test {
 namespace {
 
 Problem workedExample() {
-  ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json",
-                                builtinRegistry());
+  ParseResult r =
+      parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json", builtinRegistry());
   EXPECT_TRUE(r.errors.empty());
   return *r.problem;
 }

@@ -20,15 +20,22 @@ W place(const Feature& f, const Isometry3d& X) {
 
 // arccos(u·v) and arcsin(u·v) of SPEC, computed through atan2 so that angles near 0, π and
 // ±π/2 keep full precision (acos(1 − ε) would turn rounding into 1e-8 "violations").
-double angleOf(const Vector3d& u, const Vector3d& v) { return std::atan2(u.cross(v).norm(), u.dot(v)); }
-double elevation(const Vector3d& d, const Vector3d& n) { return 3.14159265358979323846 / 2 - angleOf(d, n); }
+double angleOf(const Vector3d& u, const Vector3d& v) {
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+double elevation(const Vector3d& d, const Vector3d& n) {
+  return 3.14159265358979323846 / 2 - angleOf(d, n);
+}
 
 // Directions parallel per orientation: 0 when they hold.
 double parallelViolation(const Vector3d& u, const Vector3d& v, Orientation o) {
   switch (o) {
-    case Orientation::kAligned: return angleOf(u, v);
-    case Orientation::kOpposed: return angleOf(u, -v);
-    case Orientation::kEither: return std::min(angleOf(u, v), angleOf(u, -v));
+    case Orientation::kAligned:
+      return angleOf(u, v);
+    case Orientation::kOpposed:
+      return angleOf(u, -v);
+    case Orientation::kEither:
+      return std::min(angleOf(u, v), angleOf(u, -v));
   }
   return 1e9;
 }
@@ -67,10 +74,14 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
     auto val = [&](double x) { return dist ? off(x, cc) : std::abs(x); };
     if (has_point) {
       switch (X.kind) {
-        case K::kPoint: return val((P.a - X.a).norm());
-        case K::kLine: return val(pointLine(P.a, X));
-        case K::kPlane: return val(pointPlane(P.a, X));
-        case K::kCylinder: return std::abs(pointLine(P.a, X) - X.r);  // point on cylinder
+        case K::kPoint:
+          return val((P.a - X.a).norm());
+        case K::kLine:
+          return val(pointLine(P.a, X));
+        case K::kPlane:
+          return val(pointPlane(P.a, X));
+        case K::kCylinder:
+          return std::abs(pointLine(P.a, X) - X.r);  // point on cylinder
       }
     }
     if (F.kind == K::kLine && M.kind == K::kLine) {

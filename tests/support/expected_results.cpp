@@ -1,10 +1,10 @@
 #include "expected_results.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "relpos/core/spec_io.hpp"
@@ -25,7 +25,8 @@ void checkOne(const Problem& p, const nlohmann::json& x) {
   Solution s = solve(p, builtinRegistry());
   if (x.contains("fires")) {
     const std::string want = x["fires"];
-    EXPECT_TRUE(std::any_of(s.rules.begin(), s.rules.end(), [&](const char* f) { return want == f; }))
+    EXPECT_TRUE(
+        std::any_of(s.rules.begin(), s.rules.end(), [&](const char* f) { return want == f; }))
         << want << " did not fire; fired: " << firedList(s);
   }
   EXPECT_EQ(toString(s.status), x["status"].get<std::string>()) << describeBranches(s);
@@ -53,7 +54,8 @@ int checkFolderAgainstExpectations(const std::string& folder, const std::string&
   if (!in) return 0;
   const nlohmann::json expected = nlohmann::json::parse(in);
   int checked = 0;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(RELPOS_DATA_DIR) + "/" + folder)) {
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(RELPOS_DATA_DIR) + "/" + folder)) {
     if (e.path().extension() != ".json") continue;
     SCOPED_TRACE(e.path().string());
     ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());

@@ -1,9 +1,8 @@
 #include "local_dof.hpp"
 
+#include <Eigen/SVD>
 #include <cmath>
 #include <vector>
-
-#include <Eigen/SVD>
 
 namespace relpos::test {
 namespace {
@@ -31,18 +30,23 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
   auto vec = [&](const Vector3d& x) { out.insert(out.end(), {x.x(), x.y(), x.z()}); };
   auto pointLine = [&](const Vector3d& p, const W& l, double dist) {
     Vector3d x = (p - l.a).cross(l.d);
-    if (std::abs(dist) < 1e-12) vec(x);
-    else out.push_back(x.norm() - dist);
+    if (std::abs(dist) < 1e-12)
+      vec(x);
+    else
+      out.push_back(x.norm() - dist);
   };
   auto parallel = [&](const Vector3d& a, const Vector3d& b) { vec(a.cross(b)); };
   auto angleRes = [&](const Vector3d& a, const Vector3d& b, double cos_v) {
-    if (std::abs(std::abs(cos_v) - 1) < 1e-12) parallel(a, b);
-    else out.push_back(a.dot(b) - cos_v);
+    if (std::abs(std::abs(cos_v) - 1) < 1e-12)
+      parallel(a, b);
+    else
+      out.push_back(a.dot(b) - cos_v);
   };
   const bool has_point = F.kind == K::kPoint || M.kind == K::kPoint;
   const W& P = M.kind == K::kPoint ? M : F;
   const W& Xo = M.kind == K::kPoint ? F : M;
-  const bool lp = (F.kind == K::kLine && M.kind == K::kPlane) || (F.kind == K::kPlane && M.kind == K::kLine);
+  const bool lp =
+      (F.kind == K::kLine && M.kind == K::kPlane) || (F.kind == K::kPlane && M.kind == K::kLine);
   const W& Ln = F.kind == K::kLine ? F : M;
   const W& Pl = F.kind == K::kPlane ? F : M;
   if (t == "distance" || t == "coincident") {
@@ -50,12 +54,18 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
     if (has_point) {
       switch (Xo.kind) {
         case K::kPoint:
-          if (std::abs(val) < 1e-12) vec(P.a - Xo.a);
-          else out.push_back((P.a - Xo.a).norm() - val);
+          if (std::abs(val) < 1e-12)
+            vec(P.a - Xo.a);
+          else
+            out.push_back((P.a - Xo.a).norm() - val);
           return;
-        case K::kLine: return pointLine(P.a, Xo, val);
-        case K::kCylinder: return pointLine(P.a, Xo, Xo.r);
-        case K::kPlane: out.push_back((P.a - Xo.a).dot(Xo.d) - val); return;
+        case K::kLine:
+          return pointLine(P.a, Xo, val);
+        case K::kCylinder:
+          return pointLine(P.a, Xo, Xo.r);
+        case K::kPlane:
+          out.push_back((P.a - Xo.a).dot(Xo.d) - val);
+          return;
       }
     }
     if (F.kind == K::kLine && M.kind == K::kLine) {

@@ -112,10 +112,14 @@ namespace {
 Feature randomFeature(K kind, Rng& rng, bool grid) {
   Vector3d p = rng.pointOrGrid(grid), d = rng.unitOrAxis(grid);
   switch (kind) {
-    case K::kPoint: return Feature::makePoint(p);
-    case K::kLine: return Feature::makeLine(p, d);
-    case K::kPlane: return Feature::makePlane(p, d);
-    case K::kCylinder: return Feature::makeCylinder(p, d, grid ? rng.integer(1, 2) : rng.uniform(0.1, 1.0));
+    case K::kPoint:
+      return Feature::makePoint(p);
+    case K::kLine:
+      return Feature::makeLine(p, d);
+    case K::kPlane:
+      return Feature::makePlane(p, d);
+    case K::kCylinder:
+      return Feature::makeCylinder(p, d, grid ? rng.integer(1, 2) : rng.uniform(0.1, 1.0));
   }
   return Feature::makePoint(p);
 }
@@ -153,7 +157,8 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
   const Vector3d in_plane_jitter = rng.point(1.0);
   auto valueDistance = [&](bool is_signed) {
     // Unsigned distances stay positive: a zero distance is a coincidence, with other DOF.
-    return grid ? double(rng.integer(is_signed ? -2 : 1, 2)) : rng.uniform(is_signed ? -1.5 : 0.05, 1.5);
+    return grid ? double(rng.integer(is_signed ? -2 : 1, 2))
+                : rng.uniform(is_signed ? -1.5 : 0.05, 1.5);
   };
   double v = 0.0;
   if (t == "distance" || t == "coincident") {
@@ -165,9 +170,12 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
     } else if (mobile_point || fixed_point) {
       const Feature& P = mobile_point ? mW : fW;  // the point (world)
       const K xk = mobile_point ? kind.fixed : kind.mobile;
-      if (xk == K::kPlane) v = dist ? valueDistance(true) : 0.0;
-      else if (xk == K::kCylinder) v = 0.0;
-      else v = dist ? valueDistance(false) : 0.0;
+      if (xk == K::kPlane)
+        v = dist ? valueDistance(true) : 0.0;
+      else if (xk == K::kCylinder)
+        v = 0.0;
+      else
+        v = dist ? valueDistance(false) : 0.0;
       if (mobile_point) {
         // Place the fixed line/plane/cylinder relative to the mobile point.
         const Vector3d d = fW.direction;
@@ -220,11 +228,15 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
       fW.direction = atAngle(mW.direction, v, rng);
     }
   } else if (t == "parallel") {
-    if (kind.fixed != kind.mobile) fW.direction = rng.perpendicular(mW.direction);
-    else fW.direction = sgn * mW.direction;
+    if (kind.fixed != kind.mobile)
+      fW.direction = rng.perpendicular(mW.direction);
+    else
+      fW.direction = sgn * mW.direction;
   } else if (t == "perpendicular") {
-    if (kind.fixed != kind.mobile) fW.direction = sgn * mW.direction;
-    else fW.direction = rng.perpendicular(mW.direction);
+    if (kind.fixed != kind.mobile)
+      fW.direction = sgn * mW.direction;
+    else
+      fW.direction = rng.perpendicular(mW.direction);
   } else if (t == "tangent") {
     if (kind.fixed == K::kCylinder && kind.mobile == K::kCylinder) {
       fW.direction = (rng.integer(0, 1) ? 1.0 : -1.0) * mW.direction;

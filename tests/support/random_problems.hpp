@@ -13,7 +13,9 @@ namespace relpos::test {
 class Rng {
  public:
   explicit Rng(std::uint64_t seed) : g_(seed) {}
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(g_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(g_);
+  }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(g_); }
   Vector3d unit();
   Vector3d point(double half = 2.0);

@@ -13,7 +13,7 @@ const char* toString(FeatureKind kind);
 
 struct Feature {
   FeatureKind kind = FeatureKind::kPoint;
-  Vector3d point = Vector3d::Zero();      // the point, or a support point of line/plane/axis
+  Vector3d point = Vector3d::Zero();       // the point, or a support point of line/plane/axis
   Vector3d direction = Vector3d::UnitZ();  // line/axis direction or plane normal (unit)
   double radius = 0.0;                     // cylinders only
 

@@ -62,9 +62,9 @@ struct ConstraintSet {
   // Pairs (by id) already tested without any rule applying: not tested again, also not after a
   // branch (PMF 003 §VII-A). Best effort: when full, pairs are simply re-tested.
   FixedVector<std::uint32_t, 96> tested;
-  SourceMask dropped_redundant = 0;                          // sources of constraints dropped
+  SourceMask dropped_redundant = 0;  // sources of constraints dropped
   std::uint16_t next_id = 1;
-  bool overflow = false;                                     // a push_back was refused
+  bool overflow = false;  // a push_back was refused
   void clear() {
     translational.clear();
     rotational.clear();

@@ -91,7 +91,7 @@ struct MatchContext {
 using MatchFn = MatchResult (*)(MatchContext& ctx);
 
 struct ManifoldInfo {
-  std::string name;         // manifold type name, e.g. "OneParallel"
+  std::string name;  // manifold type name, e.g. "OneParallel"
   std::string description;
   std::string origin = "built-in";
 };

@@ -23,9 +23,9 @@ struct Solution {
   Status status = Status::kNotSolved;
   std::string message = "relpos::solve was not called.";
   std::vector<Branch> branches;
-  std::vector<int> conflicts;       // input constraint indices (inconsistent)
-  std::vector<int> redundant;       // input constraint indices implied by the others
-  std::vector<const char*> rules;   // names of rules that fired, in order of first firing
+  std::vector<int> conflicts;      // input constraint indices (inconsistent)
+  std::vector<int> redundant;      // input constraint indices implied by the others
+  std::vector<const char*> rules;  // names of rules that fired, in order of first firing
   double solve_us = 0.0;
 
   void clear();

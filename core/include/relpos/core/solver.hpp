@@ -13,8 +13,8 @@
 namespace relpos {
 
 struct SolverOptions {
-  int max_branches = 64;      // more alternatives than this -> unhandled
-  int max_rule_steps = 256;   // rewrite steps per constraint set before giving up (unhandled)
+  int max_branches = 64;     // more alternatives than this -> unhandled
+  int max_rule_steps = 256;  // rewrite steps per constraint set before giving up (unhandled)
   // Every rule condition ("parallel", "d_a = d_b", "on the line") is decided within these:
   // lengths relative to the problem's size (its largest coordinate, at least 1), angles in
   // radians. Loosen them for data with few significant digits (e.g. 1e-6 for CAD exports).

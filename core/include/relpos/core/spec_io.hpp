@@ -2,11 +2,10 @@
 // Reading specs and writing results (SPEC.md §1–2). Bad input never throws out of these
 // functions: every problem found becomes a Diagnostic naming the JSON path and what is wrong.
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "relpos/core/problem.hpp"
 #include "relpos/core/registry.hpp"
@@ -34,13 +33,13 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry);
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
 
 struct ResultOptions {
-  int samples = 0;       // poses per branch (--samples)
-  double window = 1.0;   // half-width for unbounded length parameters (--window)
+  int samples = 0;      // poses per branch (--samples)
+  double window = 1.0;  // half-width for unbounded length parameters (--window)
   std::uint64_t seed = 0;
 };
 
 // The result document of SPEC.md §2: nearest pose per branch, best, samples, etc.
 nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
-                            const ResultOptions& options);
+                                    const ResultOptions& options);
 
 }  // namespace relpos

@@ -10,24 +10,24 @@
 namespace relpos::manifolds {
 
 enum class TranslationKind : unsigned char {
-  kFree,          // R³                       3 DOF
-  kPoint,         // PP0                      0
-  kLine,          // PL0                      1
-  kPlane,         // PPl                      2
-  kSphere,        // PP p > 0                 2
-  kCylinder,      // PL p > 0                 2
-  kLineOfPlanes,  // PPl ∩ PPl (non-parallel) 1 (line recomputed for each R, PMF §V-B.5)
+  kFree,              // R³                       3 DOF
+  kPoint,             // PP0                      0
+  kLine,              // PL0                      1
+  kPlane,             // PPl                      2
+  kSphere,            // PP p > 0                 2
+  kCylinder,          // PL p > 0                 2
+  kLineOfPlanes,      // PPl ∩ PPl (non-parallel) 1 (line recomputed for each R, PMF §V-B.5)
   kPointOfLinePlane,  // PL0 ∩ PPl (non-parallel) 0
-  kEllipse,       // PL p ∩ PPl (non-parallel) 1 (PMF eq. 10)
+  kEllipse,           // PL p ∩ PPl (non-parallel) 1 (PMF eq. 10)
 };
 const char* toString(TranslationKind k);
 
 // A shape in translation space for a given R.
 struct TShape {
   enum Kind : unsigned char { kPoint, kLine, kPlane, kSphere, kCylinder } kind = kPoint;
-  Vector3d c = Vector3d::Zero();   // centre / support point
-  Vector3d d = Vector3d::UnitZ();  // line or axis direction, or plane normal
-  Vector3d e1 = Vector3d::UnitX(); // a unit vector ⊥ d that turns with d's owner
+  Vector3d c = Vector3d::Zero();    // centre / support point
+  Vector3d d = Vector3d::UnitZ();   // line or axis direction, or plane normal
+  Vector3d e1 = Vector3d::UnitX();  // a unit vector ⊥ d that turns with d's owner
   double r = 0.0;
 };
 TShape shapeOf(const Fundamental& f, const Matrix3d& R);
