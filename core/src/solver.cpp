@@ -82,6 +82,9 @@ restart:
   for (std::size_t i = 0; i < list.size(); ++i) {
     for (std::size_t j = i + 1; j < list.size(); ++j) {
       if (set.wasTested(list[i], list[j])) continue;
+      // The PMF rules are for exact values; pairs with a range are left to the matchers (which
+      // answer `unhandled` where no range rule applies).
+      if (!list[i].exact() || !list[j].exact()) continue;
       for (const auto& entry : st.registry.rulesFor(list[i].kind, list[j].kind)) {
         const RuleInfo& rule = st.registry.rules()[entry.rule];
         const Fundamental& a = entry.swapped ? list[j] : list[i];

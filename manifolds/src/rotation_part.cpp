@@ -1,5 +1,6 @@
 #include "relpos/manifolds/rotation_part.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace relpos::manifolds {
@@ -16,6 +17,8 @@ const char* toString(RotationKind k) {
       return "TwoAngle";
     case RotationKind::kFree:
       return "Free";
+    case RotationKind::kOneAngleRange:
+      return "OneAngleMinMax";
   }
   return "?";
 }
@@ -69,6 +72,17 @@ RotationPart RotationPart::oneAngle(const Vector3d& u_m, const Vector3d& u_f, do
 
 RotationPart RotationPart::free() { return RotationPart{}; }
 
+RotationPart RotationPart::oneAngleRange(const Vector3d& u_m, const Vector3d& u_f, double lo,
+                                         double hi) {
+  RotationPart r;
+  r.kind = RotationKind::kOneAngleRange;
+  r.u_m = u_m;
+  r.u_f = u_f;
+  r.alpha_lo = lo;
+  r.alpha_hi = hi;
+  return r;
+}
+
 int RotationPart::dof() const {
   switch (kind) {
     case RotationKind::kFixed:
@@ -80,6 +94,7 @@ int RotationPart::dof() const {
     case RotationKind::kTwoAngle:
       return 1;
     case RotationKind::kFree:
+    case RotationKind::kOneAngleRange:
       return 3;
   }
   return 0;
@@ -107,6 +122,14 @@ Parameter RotationPart::parameter(int i) const {
       if (i == 1) {
         p.min = -kPi / 2;
         p.max = kPi / 2;
+        p.periodic = false;
+      }
+      break;
+    case RotationKind::kOneAngleRange:
+      p.name = i == 0 ? "phi" : (i == 1 ? "theta" : "alpha");
+      if (i == 2) {
+        p.min = alpha_lo;
+        p.max = alpha_hi;
         p.periodic = false;
       }
       break;
@@ -149,6 +172,8 @@ Matrix3d RotationPart::rotation(const double* t) const {
     case RotationKind::kFree:
       return axisAngle(Vector3d::UnitZ(), t[2]) * axisAngle(Vector3d::UnitY(), t[1]) *
              axisAngle(Vector3d::UnitX(), t[0]);
+    case RotationKind::kOneAngleRange:
+      return axisAngle(u_f, t[0]) * coneBase(u_m, u_f, t[2]) * axisAngle(u_m, t[1]);
   }
   return Matrix3d::Identity();
 }
@@ -160,6 +185,14 @@ void RotationPart::project(const Matrix3d& R, double* t) const {
     case RotationKind::kOneParallel:
       t[0] = bestAngleAbout(u_f, R0 * R.transpose());
       return;
+    case RotationKind::kOneAngleRange: {
+      // α: the angle of R u_m from u_f, clamped to the range; then as for one angle.
+      const double a = std::min(alpha_hi, std::max(alpha_lo, angleBetween(R * u_m, u_f)));
+      RotationPart fixed_angle = oneAngle(u_m, u_f, a);
+      fixed_angle.project(R, t);
+      t[2] = a;
+      return;
+    }
     case RotationKind::kOneAngle: {
       // φ puts R0 u_m at the azimuth (about u_f) of R u_m, then θ is the best spin about u_m.
       Vector3d w0 = R0 * u_m, x = R * u_m;

@@ -267,6 +267,10 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
     out.add(RotationPart::free());
     return MatchResult::kMatched;
   }
+  if (n == 1 && !rs[0].exact()) {
+    out.add(RotationPart::oneAngleRange(rs[0].p, rs[0].q, rs[0].lo, rs[0].hi));
+    return MatchResult::kMatched;
+  }
   if (n == 1) {
     out.add(ang[0].parallel ? RotationPart::oneParallel(ang[0].u_m, ang[0].u_f)
                             : RotationPart::oneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha));
@@ -318,6 +322,22 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
   if (ts.size() == 0) {
     out.kind = TranslationKind::kFree;
     return true;
+  }
+  if (ts.size() == 1 && !ts[0].exact()) {
+    out.c1 = ts[0];
+    switch (ts[0].kind) {
+      case FundamentalKind::kPointPoint:
+        out.kind = TranslationKind::kShell;
+        return true;
+      case FundamentalKind::kPointLine:
+        out.kind = TranslationKind::kThickCylinder;
+        return true;
+      case FundamentalKind::kPointPlane:
+        out.kind = TranslationKind::kSlab;
+        return true;
+      case FundamentalKind::kAngle:
+        return false;
+    }
   }
   if (ts.size() == 1) {
     const Fundamental& f = ts[0];
@@ -379,6 +399,11 @@ Fundamental reanchored(const Fundamental& f, const Matrix3d& R) {
   } else {
     g.q = f.p - R * f.q;  // T on the shape p − R X: point p_f, element moved by R
     g.d = R * f.d;
+    if (f.kind == FundamentalKind::kPointPlane) {
+      // (p − R q − T)·Rn = v  <=>  (T − (p − R q))·Rn = −v: a signed range flips.
+      g.lo = -f.hi;
+      g.hi = -f.lo;
+    }
   }
   g.point_side = Side::kMobile;
   g.p = origin;
@@ -410,11 +435,17 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
   return MatchResult::kDeferred;
 }
 
+// A set with a range (min/max) is matched only where the range stands alone in its list: no
+// PMF rule combines ranges, so a range with other constraints of its kind is left unhandled.
+bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
+  for (const auto& f : list)
+    if (!f.exact() && list.size() > 1) return false;
+  return true;
+}
+
 MatchResult matchSeparable(MatchContext& ctx) {
-  for (const auto& f : ctx.set.translational)
-    if (!f.exact()) return MatchResult::kNoMatch;
-  for (const auto& f : ctx.set.rotational)
-    if (!f.exact()) return MatchResult::kNoMatch;
+  if (!rangesStandAlone(ctx.set.translational) || !rangesStandAlone(ctx.set.rotational))
+    return MatchResult::kNoMatch;
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;

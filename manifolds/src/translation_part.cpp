@@ -25,6 +25,12 @@ const char* toString(TranslationKind k) {
       return "Point";
     case TranslationKind::kEllipse:
       return "Ellipse";
+    case TranslationKind::kShell:
+      return "Shell";
+    case TranslationKind::kThickCylinder:
+      return "ThickCylinder";
+    case TranslationKind::kSlab:
+      return "Box";
   }
   return "?";
 }
@@ -75,6 +81,10 @@ int TranslationPart::dof() const {
       return 0;
     case TranslationKind::kEllipse:
       return 1;
+    case TranslationKind::kShell:
+    case TranslationKind::kThickCylinder:
+    case TranslationKind::kSlab:
+      return 3;
   }
   return 0;
 }
@@ -100,11 +110,25 @@ Parameter TranslationPart::parameter(int i) const {
       return i == 0 ? len : ang;
     case TranslationKind::kEllipse:
       return ang;
+    case TranslationKind::kShell:
+      if (i == 2) return rangeParameter();
+      if (i == 1) return Parameter{"beta", ParamKind::kAngle, 0.0, kPi, false};
+      return ang;
+    case TranslationKind::kThickCylinder:
+      return i == 0 ? len : (i == 1 ? ang : rangeParameter());
+    case TranslationKind::kSlab:
+      if (i == 2) return rangeParameter();
+      len.name = i == 0 ? "lambda1" : "lambda2";
+      return len;
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
       break;
   }
   return len;
+}
+
+Parameter TranslationPart::rangeParameter() const {
+  return Parameter{"distance", ParamKind::kLength, c1.lo, c1.hi, false};
 }
 
 namespace {
@@ -166,6 +190,13 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
       ellipseAxes(s, pl, &a1, &a2, &b);
       return linePlane(s.c, s.d, pl) + s.r * std::cos(t[0]) * a1 + b * std::sin(t[0]) * a2;
     }
+    case TranslationKind::kShell:
+      return s.c + t[2] * Vector3d(std::cos(t[0]) * std::sin(t[1]),
+                                   std::sin(t[0]) * std::sin(t[1]), std::cos(t[1]));
+    case TranslationKind::kThickCylinder:
+      return s.c + t[0] * s.d + t[2] * (std::cos(t[1]) * s.e1 + std::sin(t[1]) * e2);
+    case TranslationKind::kSlab:
+      return s.c + t[0] * s.e1 + t[1] * e2 + slabSign() * t[2] * s.d;
     case TranslationKind::kFree:
       break;
   }
@@ -214,6 +245,25 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
       t[0] = std::atan2(w.dot(a2) / b, w.dot(a1) / s.r);
       return;
     }
+    case TranslationKind::kShell: {
+      const double r = v.norm();
+      t[0] = r > 1e-300 ? std::atan2(v.y(), v.x()) : 0.0;
+      t[1] = r > 1e-300 ? std::acos(clampUnit(v.z() / r)) : 0.0;
+      t[2] = clampRange(r);
+      return;
+    }
+    case TranslationKind::kThickCylinder: {
+      t[0] = v.dot(s.d);
+      const Vector3d perp = v - t[0] * s.d;
+      t[1] = std::atan2(perp.dot(e2), perp.dot(s.e1));
+      t[2] = clampRange(perp.norm());
+      return;
+    }
+    case TranslationKind::kSlab:
+      t[0] = v.dot(s.e1);
+      t[1] = v.dot(e2);
+      t[2] = clampRange(slabSign() * v.dot(s.d));
+      return;
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
     case TranslationKind::kFree:

@@ -1,5 +1,6 @@
 // The constraint types of SPEC.md §1 and their decomposition into fundamental constraints
 // (PMF Table I). Fixed geometry arrives in world coordinates, mobile geometry in the mobile frame.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -65,13 +66,38 @@ Fundamental onOffsetPlane(const Feature& F, const Feature& M, double v, SourceMa
                                  Pl.direction, v, s);
 }
 
+void decomposeDistanceValue(const InputConstraint& c, const Feature& F, SourceMask s, double v,
+                            Decomposition& out);
+
+// A min/max range that is not a single value.
+bool isProperRange(const InputConstraint& c) { return c.isRange() && c.min != c.max; }
+
+// Somani Table III: a range on a distance bounds the translational fundamental constraint (the
+// rotational part stays exact). Point-plane ranges keep their plane unshifted and carry the signed
+// range; unsigned distances start at 0.
+void applyRange(const InputConstraint& c, Decomposition& out) {
+  for (auto& alt : out.alternatives)
+    for (Fundamental& f : alt) {
+      if (!f.translational()) continue;
+      const bool is_signed = f.kind == FundamentalKind::kPointPlane;
+      f.lo = is_signed ? c.min : std::max(0.0, c.min);
+      f.hi = c.max;
+    }
+}
+
 void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s,
                        Decomposition& out) {
-  if (c.isRange()) {
-    out.unhandled = "distance ranges (min/max) are not solved yet";
+  const bool range = isProperRange(c);
+  if (range && F.kind == K::kLine && c.mobile.kind == K::kLine && !c.parallel) {
+    out.unhandled = "a range on the skew (non-parallel) line-line distance is a mixed constraint";
     return;
   }
-  const double v = c.value;
+  decomposeDistanceValue(c, F, s, range ? 0.0 : (c.has_value ? c.value : c.min), out);
+  if (range && !out.unhandled) applyRange(c, out);
+}
+
+void decomposeDistanceValue(const InputConstraint& c, const Feature& F, SourceMask s, double v,
+                            Decomposition& out) {
   const Feature& M = c.mobile;
   if (isPointKind(F.kind) || isPointKind(M.kind)) return single(out, pointDistance(F, M, v, s));
   if (F.kind == K::kLine && M.kind == K::kLine) {
@@ -96,14 +122,19 @@ void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s,
 }
 
 void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out) {
-  if (c.isRange()) {
-    out.unhandled = "angle ranges (min/max) are not solved yet";
-    return;
-  }
   const bool line_plane = F.kind != c.mobile.kind;
-  // Table I: ∠(L, Π) = α -> ∠(d, n) = π/2 − α; the others compare directions directly.
-  const double a = line_plane ? kPi / 2 - c.value : c.value;
-  single(out, Fundamental::angle(c.mobile.direction, F.direction, a, s));
+  // Table I: ∠(L, Π) = α -> ∠(d, n) = π/2 − α; the others compare directions directly. A range
+  // maps the same way (Somani Table III: OneAngleMinMax), clamped to [0, π].
+  auto map = [&](double v) { return line_plane ? kPi / 2 - v : v; };
+  if (!isProperRange(c)) {
+    const double v = c.has_value ? c.value : c.min;
+    return single(out, Fundamental::angle(c.mobile.direction, F.direction, map(v), s));
+  }
+  const double a = map(c.min), b = map(c.max);
+  Fundamental f = Fundamental::angle(c.mobile.direction, F.direction, 0.0, s);
+  f.lo = std::max(0.0, std::min(a, b));
+  f.hi = std::min(kPi, std::max(a, b));
+  single(out, f);
 }
 
 void decomposeCoincident(const InputConstraint& c, const Feature& F, SourceMask s,

@@ -173,7 +173,7 @@ TEST(SpecParse, RangesAndSkewParse) {
   EXPECT_EQ(r.problem->constraints[0].min, 0.02);
   EXPECT_FALSE(r.problem->constraints[1].parallel);
   Solution s = solve(*r.problem, builtinRegistry());
-  EXPECT_EQ(s.status, Status::kUnhandled);  // until the inequality issue
+  EXPECT_EQ(s.status, Status::kUnhandled);  // the skew line-line distance is a mixed constraint
 }
 
 TEST(SpecParse, ConstraintIdIsEchoed) {

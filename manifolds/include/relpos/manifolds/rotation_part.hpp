@@ -12,6 +12,8 @@ enum class RotationKind : unsigned char {
   kOneAngle,     // 2 DOF: R(φ, θ) = R(u_f, φ) R0 R(u_m, θ)              (PMF eq. 4)
   kTwoAngle,     // 1 DOF: R(φ) = R(u_f, φ) R0 R(u_m, θ(φ)), φ in [lo, hi] (App. III-D)
   kFree,         // 3 DOF: R = Rz(yaw) Ry(pitch) Rx(roll)                (PMF eq. 5)
+  kOneAngleRange,  // 3 DOF: R(φ, θ, α) = R(u_f, φ) R0(α) R(u_m, θ), α in [lo, hi]
+                   // (Somani's OneAngleMinMax, 004 Table VI)
 };
 const char* toString(RotationKind k);
 
@@ -25,6 +27,8 @@ struct RotationPart {
   double sign = 1.0;
   double phi_lo = -kPi, phi_hi = kPi;
   bool phi_periodic = true;
+  // kOneAngleRange: the bounds of the angle between R u_m and u_f.
+  double alpha_lo = 0.0, alpha_hi = kPi;
 
   int dof() const;
   Parameter parameter(int i) const;
@@ -35,6 +39,7 @@ struct RotationPart {
   static RotationPart oneParallel(const Vector3d& u_m, const Vector3d& u_f);
   static RotationPart oneAngle(const Vector3d& u_m, const Vector3d& u_f, double alpha);
   static RotationPart free();
+  static RotationPart oneAngleRange(const Vector3d& u_m, const Vector3d& u_f, double lo, double hi);
 };
 
 // θ(φ) of a two-angle rotation; false when φ is outside the valid set (beyond rounding).

@@ -19,6 +19,10 @@ enum class TranslationKind : unsigned char {
   kLineOfPlanes,      // PPl ∩ PPl (non-parallel) 1 (line recomputed for each R, PMF §V-B.5)
   kPointOfLinePlane,  // PL0 ∩ PPl (non-parallel) 0
   kEllipse,           // PL p ∩ PPl (non-parallel) 1 (PMF eq. 10)
+  // Ranges (Somani 004 Table VI): the distance itself is a bounded parameter.
+  kShell,          // PP in [lo, hi]            3 (a thick sphere)
+  kThickCylinder,  // PL in [lo, hi]            3
+  kSlab,           // PPl in [lo, hi] (signed)  3 (Somani's infinite Box)
 };
 const char* toString(TranslationKind k);
 
@@ -40,6 +44,13 @@ struct TranslationPart {
   Parameter parameter(int i) const;
   Vector3d translation(const Matrix3d& R, const double* t) const;
   void project(const Matrix3d& R, const Vector3d& T, double* t) const;
+
+ private:
+  Parameter rangeParameter() const;
+  double clampRange(double v) const { return v < c1.lo ? c1.lo : (v > c1.hi ? c1.hi : v); }
+  // T = S_f − R S_m: a mobile point on a fixed plane moves with +n, a fixed point on a mobile
+  // plane puts T on the −n side.
+  double slabSign() const { return c1.point_side == Side::kMobile ? 1.0 : -1.0; }
 };
 
 }  // namespace relpos::manifolds

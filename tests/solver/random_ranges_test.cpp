@@ -1,0 +1,82 @@
+// Single range (min/max) constraints built around a known pose (Somani 004 Table III): every kind
+// of distance and angle range solves, with one more DOF than its exact counterpart (the bounded
+// distance or angle becomes a parameter), contains the known pose, and every sampled pose stays
+// within the range. One-sided ranges too.
+#include <algorithm>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "evaluator.hpp"
+#include "random_problems.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+void runRanges(bool grid, std::uint64_t seed) {
+  Rng rng(seed);
+  int n = 0;
+  for (const SingleKind& kind : singleKinds()) {
+    const std::string type = kind.type;
+    if (type != "distance" && type != "angle") continue;
+    for (int k = 0; k < 12; ++k, ++n) {
+      KnownProblem kp = emptyKnownProblem(rng, grid);
+      addConstraint(kp, kind, rng, grid);
+      InputConstraint& c = kp.problem.constraints.back();
+      // Widen the exact value into a range around it: two-sided, only min, or only max.
+      const double v = c.value;
+      c.has_value = false;
+      c.min = -std::numeric_limits<double>::infinity();
+      c.max = std::numeric_limits<double>::infinity();
+      const int sides = k % 3;
+      // Keep within what the spec accepts: unsigned distances >= 0, angles in their interval.
+      const bool plane = kind.fixed == FeatureKind::kPlane || kind.mobile == FeatureKind::kPlane;
+      const bool line_plane = kind.fixed != kind.mobile;
+      double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+      if (type == "distance" && !plane) lo = 0.0;
+      if (type == "angle") lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
+      if (sides != 2) c.min = std::max(lo, v - rng.uniform(0.05, 0.4));
+      if (sides != 1) c.max = std::min(hi, v + rng.uniform(0.05, 0.4));
+      SCOPED_TRACE(std::string(kind.label) + " range [" + std::to_string(c.min) + ", " +
+                   std::to_string(c.max) + "] #" + std::to_string(k));
+      ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9);
+      Solution s = solve(kp.problem, builtinRegistry());
+      ASSERT_EQ(s.status, Status::kSolved) << s.message;
+      ASSERT_EQ(static_cast<int>(s.branches.size()), kind.branches) << describeBranches(s);
+      for (const Branch& b : s.branches) EXPECT_EQ(b.manifold->dof(), kind.dof + 1);
+      EXPECT_TRUE(someBranchContains(s, kp.X_WM_star))
+          << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+      std::string where;
+      EXPECT_LT(worstSampledViolation(kp.problem, s, 30, seed + n, &where), 1e-9) << where;
+    }
+  }
+}
+
+TEST(RandomRanges, GenericGeometry) { runRanges(false, 404); }
+TEST(RandomRanges, AxisAlignedIntegerGeometry) { runRanges(true, 505); }
+
+TEST(Ranges, NearestProjectsIntoTheRange) {
+  // A point 0.1 to 0.3 above a plane, initially 1 above: nearest is 0.3 above, rotation kept.
+  Problem p;
+  p.addFixedFeature("floor", Feature::makePlane({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("P", Feature::makePoint({0, 0, 0}));
+  p.addConstraint("distance", "floor", "P", 0.0);
+  p.constraints[0].has_value = false;
+  p.constraints[0].min = 0.1;
+  p.constraints[0].max = 0.3;
+  p.mobile.pose.translation() = Vector3d(0.5, -0.2, 1.0);
+  Solution s = solve(p, builtinRegistry());
+  ASSERT_EQ(s.status, Status::kSolved) << s.message;
+  ASSERT_EQ(s.branches.size(), 1u);
+  EXPECT_EQ(s.branches[0].manifold->describe(), "rotation Free, translation Box");
+  NearestPose n = nearestOnBranch(s.branches[0], p.mobile.pose);
+  EXPECT_LT((n.pose.translation() - Vector3d(0.5, -0.2, 0.3)).norm(), 1e-9);
+  EXPECT_NEAR(n.distance, 0.7, 1e-9);
+  // Already inside: the pose itself.
+  p.mobile.pose.translation() = Vector3d(0.5, -0.2, 0.2);
+  EXPECT_NEAR(nearestOnBranch(s.branches[0], p.mobile.pose).distance, 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace relpos::test
