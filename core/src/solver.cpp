@@ -82,11 +82,12 @@ restart:
   for (std::size_t i = 0; i < list.size(); ++i) {
     for (std::size_t j = i + 1; j < list.size(); ++j) {
       if (set.wasTested(list[i], list[j])) continue;
-      // The PMF rules are for exact values; pairs with a range are left to the matchers (which
-      // answer `unhandled` where no range rule applies).
-      if (!list[i].exact() || !list[j].exact()) continue;
+      // The PMF rules are for exact values; a pair with a range goes only to the rules that
+      // declare they handle ranges (Somani's), the rest is left to the matchers.
+      const bool ranged = !list[i].exact() || !list[j].exact();
       for (const auto& entry : st.registry.rulesFor(list[i].kind, list[j].kind)) {
         const RuleInfo& rule = st.registry.rules()[entry.rule];
+        if (ranged && !rule.handles_ranges) continue;
         const Fundamental& a = entry.swapped ? list[j] : list[i];
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();

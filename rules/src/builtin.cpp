@@ -14,6 +14,7 @@ void registerBuiltinRules(Registry& r) {
   registerPointPlaneRules(r);
   registerMixedRoleRules(r);
   registerAngleRules(r);
+  registerRangeRules(r);
 }
 }  // namespace relpos::rules
 

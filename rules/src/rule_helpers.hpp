@@ -78,8 +78,10 @@ inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, d
 
 // Registers a rule family with its cases.
 inline void addFamily(Registry& r, const char* name, const char* citation, FundamentalKind first,
-                      FundamentalKind second, RuleFn fn, std::vector<RuleCase> cases) {
+                      FundamentalKind second, RuleFn fn, std::vector<RuleCase> cases,
+                      bool handles_ranges = false) {
   RuleInfo info;
+  info.handles_ranges = handles_ranges;
   info.name = name;
   info.citation = citation;
   info.first = first;

@@ -65,6 +65,8 @@ struct RuleInfo {
   RuleFn fn = nullptr;
   std::vector<RuleCase> cases;
   std::string origin = "built-in";
+  // Whether the rule understands ranges (lo < hi); other rules never see a pair with a range.
+  bool handles_ranges = false;
   // The name recorded when this rule fires with case `fired` (-1: the rule's own name).
   const std::string& firedName(int fired) const {
     return fired >= 0 && fired < static_cast<int>(cases.size()) ? cases[fired].name : name;

@@ -14,6 +14,7 @@ void registerPointLinePlaneRules(Registry& registry);   // App. IV Table VI
 void registerPointPlaneRules(Registry& registry);       // App. IV Table VII
 void registerMixedRoleRules(Registry& registry);        // App. IV Tables VIII and IX
 void registerAngleRules(Registry& registry);            // App. IV Table X
+void registerRangeRules(Registry& registry);            // Somani 004 Table VII (ranges)
 // Everything above.
 void registerBuiltinRules(Registry& registry);
 }  // namespace relpos::rules
