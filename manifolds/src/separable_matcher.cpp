@@ -2,6 +2,8 @@
 // Table III and the combined translational set to a row of Table IV, and emits one branch per
 // rotational solution.
 #include <algorithm>
+
+#include <Eigen/SVD>
 #include <cmath>
 
 #include "relpos/core/solution.hpp"
@@ -356,7 +358,7 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
         return false;
     }
   }
-  if (ts.size() != 2) return false;
+  if (ts.size() != 2 || !ts[0].exact() || !ts[1].exact()) return false;
   const Fundamental* plane = nullptr;
   const Fundamental* other = nullptr;
   for (int k = 0; k < 2; ++k) {
@@ -385,6 +387,51 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
     default:
       return false;
   }
+}
+
+// Point-plane constraints (exact or ranged), points on lines and pinned points are all planes in
+// translation space: up to three with independent normals, whose relative orientation no rotation
+// of the set changes, make a kPlanes part (segment, strip, parallelepiped, ...).
+bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationAlternatives& rots,
+                 TranslationPart& out) {
+  const auto& ts = set.translational;
+  int rows = 0;
+  for (const auto& f : ts) {
+    if (f.kind == FundamentalKind::kPointPlane) rows += 1;
+    else if (f.exact() && tol.zeroLength(f.value()))
+      rows += f.kind == FundamentalKind::kPointLine ? 2 : 3;
+    else
+      return false;
+  }
+  if (rows > 3 || ts.size() > 3) return false;
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    for (std::size_t j = i + 1; j < ts.size(); ++j)
+      if (ts[i].kind != FundamentalKind::kPointPoint && ts[j].kind != FundamentalKind::kPointPoint &&
+          !holdsForEveryRotation(ts[i], ts[j], rots, tol,
+                                 [](const Vector3d&, const Vector3d&) { return true; }))
+        return false;
+  out.kind = TranslationKind::kPlanes;
+  out.linear.clear();
+  for (const auto& f : ts) out.linear.push_back(f);
+  // Independent normals (checked at one rotation: their relative orientation is fixed).
+  const Matrix3d R = rots.parts[0].R0;
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  int k = 0;
+  for (const auto& f : ts) {
+    const TShape s = shapeOf(f, R);
+    if (f.kind == FundamentalKind::kPointPlane) N.row(k++) = s.d.transpose();
+    else if (f.kind == FundamentalKind::kPointLine) {
+      N.row(k++) = s.e1.transpose();
+      N.row(k++) = s.d.cross(s.e1).transpose();
+    } else {
+      for (int a = 0; a < 3; ++a) N.row(k++) = Vector3d::Unit(a).transpose();
+    }
+  }
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(N.topRows(3));
+  const auto sv = svd.singularValues();
+  int rank = 0;
+  for (int i = 0; i < 3; ++i) rank += sv[i] > 1e-9 * std::max(1.0, sv[0]);
+  return rank == k;
 }
 
 // With the rotation known, every translational constraint confines T to a fixed shape: re-anchor
@@ -444,13 +491,14 @@ bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
 }
 
 MatchResult matchSeparable(MatchContext& ctx) {
-  if (!rangesStandAlone(ctx.set.translational) || !rangesStandAlone(ctx.set.rotational))
-    return MatchResult::kNoMatch;
+  if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
-  if (!matchTranslation(ctx.set, ctx.tol, rots, trans)) return reanchorForEachRotation(ctx, rots);
+  if (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
+      !matchPlanes(ctx.set, ctx.tol, rots, trans))
+    return reanchorForEachRotation(ctx, rots);
   for (int k = 0; k < rots.count; ++k) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
     ctx.out.branches.emplace_back();

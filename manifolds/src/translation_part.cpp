@@ -1,5 +1,6 @@
 #include "relpos/manifolds/translation_part.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -31,6 +32,8 @@ const char* toString(TranslationKind k) {
       return "ThickCylinder";
     case TranslationKind::kSlab:
       return "Box";
+    case TranslationKind::kPlanes:
+      return "Planes";
   }
   return "?";
 }
@@ -85,6 +88,8 @@ int TranslationPart::dof() const {
     case TranslationKind::kThickCylinder:
     case TranslationKind::kSlab:
       return 3;
+    case TranslationKind::kPlanes:
+      return 3 - planeRows() + rangedPlanes();
   }
   return 0;
 }
@@ -120,11 +125,103 @@ Parameter TranslationPart::parameter(int i) const {
       if (i == 2) return rangeParameter();
       len.name = i == 0 ? "lambda1" : "lambda2";
       return len;
+    case TranslationKind::kPlanes: {
+      const int free = 3 - planeRows();
+      if (i < free) {
+        len.name = free == 1 ? "lambda" : (i == 0 ? "lambda1" : "lambda2");
+        return len;
+      }
+      int r = i - free;
+      for (const Fundamental& f : linear)
+        if (!f.exact() && r-- == 0)
+          return Parameter{"distance", ParamKind::kLength, f.lo, f.hi, false};
+      return len;
+    }
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
       break;
   }
   return len;
+}
+
+namespace {
+
+// kPlanes, for a given R: each linear constraint as rows n·T = h0 + sign·v (v = the range
+// parameter for a ranged plane, 0 otherwise).
+struct PlaneRows {
+  int k = 0;
+  Vector3d n[3];
+  double h0[3] = {0, 0, 0};
+  double sign[3] = {1, 1, 1};
+  int ranged[3] = {-1, -1, -1};  // index of the row's range parameter among the ranged planes
+  Vector3d e1 = Vector3d::UnitX();  // in-plane direction of the first plane (for k = 1)
+};
+
+PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d& R) {
+  PlaneRows rows;
+  int n_ranged = 0;
+  auto add = [&](const Vector3d& n, double h0, double sign, int ranged) {
+    if (rows.k == 3) return;
+    rows.n[rows.k] = n;
+    rows.h0[rows.k] = h0;
+    rows.sign[rows.k] = sign;
+    rows.ranged[rows.k] = ranged;
+    ++rows.k;
+  };
+  for (const Fundamental& f : linear) {
+    const TShape s = shapeOf(f, R);
+    switch (f.kind) {
+      case FundamentalKind::kPointPlane: {
+        if (rows.k == 0) rows.e1 = s.e1;
+        const double sign = f.point_side == Side::kMobile ? 1.0 : -1.0;
+        add(s.d, s.d.dot(s.c), sign, f.exact() ? -1 : n_ranged++);
+        break;
+      }
+      case FundamentalKind::kPointLine: {  // exact, on the line: two planes through it
+        const Vector3d e2 = s.d.cross(s.e1);
+        add(s.e1, s.e1.dot(s.c), 1.0, -1);
+        add(e2, e2.dot(s.c), 1.0, -1);
+        break;
+      }
+      case FundamentalKind::kPointPoint:  // exact, pinned: three planes
+        for (int a = 0; a < 3; ++a) add(Vector3d::Unit(a), s.c[a], 1.0, -1);
+        break;
+      case FundamentalKind::kAngle:
+        break;
+    }
+  }
+  return rows;
+}
+
+// T on every plane at the given range values, and the free directions.
+Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Vector3d h = Vector3d::Zero();
+  for (int i = 0; i < rows.k; ++i) {
+    N.row(i) = rows.n[i].transpose();
+    h[i] = rows.h0[i] + (rows.ranged[i] >= 0 ? rows.sign[i] * v[rows.ranged[i]] : 0.0);
+  }
+  const Eigen::MatrixXd Nk = N.topRows(rows.k);
+  const Eigen::MatrixXd G = Nk * Nk.transpose();
+  const Vector3d T = Nk.transpose() * G.ldlt().solve(h.head(rows.k));
+  if (rows.k == 2) free[0] = rows.n[0].cross(rows.n[1]).normalized();
+  if (rows.k == 1) {
+    free[0] = rows.e1;
+    free[1] = rows.n[0].cross(rows.e1);
+  }
+  return T;
+}
+
+}  // namespace
+
+int TranslationPart::planeRows() const {
+  return planeRowsFor(linear, Matrix3d::Identity()).k;
+}
+
+int TranslationPart::rangedPlanes() const {
+  int n = 0;
+  for (const Fundamental& f : linear) n += !f.exact();
+  return n;
 }
 
 Parameter TranslationPart::rangeParameter() const {
@@ -162,6 +259,14 @@ void ellipseAxes(const TShape& cyl, const TShape& plane, Vector3d* e1, Vector3d*
 
 Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const {
   if (kind == TranslationKind::kFree) return Vector3d(t[0], t[1], t[2]);
+  if (kind == TranslationKind::kPlanes) {
+    const PlaneRows rows = planeRowsFor(linear, R);
+    const int free = 3 - rows.k;
+    Vector3d dirs[2];
+    Vector3d T = planesPoint(rows, t + free, dirs);
+    for (int j = 0; j < free; ++j) T += t[j] * dirs[j];
+    return T;
+  }
   const TShape s = shapeOf(c1, R);
   const Vector3d e2 = s.d.cross(s.e1);
   switch (kind) {
@@ -198,6 +303,7 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
     case TranslationKind::kSlab:
       return s.c + t[0] * s.e1 + t[1] * e2 + slabSign() * t[2] * s.d;
     case TranslationKind::kFree:
+    case TranslationKind::kPlanes:  // handled above
       break;
   }
   return Vector3d::Zero();
@@ -206,6 +312,26 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
 void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) const {
   if (kind == TranslationKind::kFree) {
     t[0] = T.x(), t[1] = T.y(), t[2] = T.z();
+    return;
+  }
+  if (kind == TranslationKind::kPlanes) {
+    // The range values from T's heights over the planes (clamped), then the free coordinates.
+    const PlaneRows rows = planeRowsFor(linear, R);
+    const int free = 3 - rows.k;
+    double* v = t + free;
+    int r = 0;
+    for (const Fundamental& f : linear) {
+      if (f.exact()) continue;
+      for (int i = 0; i < rows.k; ++i)
+        if (rows.ranged[i] == r) {
+          const double x = rows.sign[i] * (rows.n[i].dot(T) - rows.h0[i]);
+          v[r] = std::min(f.hi, std::max(f.lo, x));
+        }
+      ++r;
+    }
+    Vector3d dirs[2];
+    const Vector3d P = planesPoint(rows, v, dirs);
+    for (int j = 0; j < free; ++j) t[j] = dirs[j].dot(T - P);
     return;
   }
   const TShape s = shapeOf(c1, R);
@@ -267,6 +393,7 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
     case TranslationKind::kFree:
+    case TranslationKind::kPlanes:  // handled above
       return;
   }
 }

@@ -23,6 +23,11 @@ enum class TranslationKind : unsigned char {
   kShell,          // PP in [lo, hi]            3 (a thick sphere)
   kThickCylinder,  // PL in [lo, hi]            3
   kSlab,           // PPl in [lo, hi] (signed)  3 (Somani's infinite Box)
+  // Up to three planes (PPl, exact or ranged; a point on a line counts as two planes, a pinned
+  // point as three) with independent normals: a point, a line, a plane, a segment, a strip, an
+  // infinite or finite parallelepiped (Somani 004 Fig. 3 and Table VI). DOF = free directions +
+  // ranged planes.
+  kPlanes,
 };
 const char* toString(TranslationKind k);
 
@@ -39,6 +44,7 @@ TShape shapeOf(const Fundamental& f, const Matrix3d& R);
 struct TranslationPart {
   TranslationKind kind = TranslationKind::kFree;
   Fundamental c1, c2;
+  FixedVector<Fundamental, 3> linear;  // kPlanes: the point-plane / point-line / point-point ones
 
   int dof() const;
   Parameter parameter(int i) const;
@@ -51,6 +57,8 @@ struct TranslationPart {
   // T = S_f − R S_m: a mobile point on a fixed plane moves with +n, a fixed point on a mobile
   // plane puts T on the −n side.
   double slabSign() const { return c1.point_side == Side::kMobile ? 1.0 : -1.0; }
+  int planeRows() const;
+  int rangedPlanes() const;
 };
 
 }  // namespace relpos::manifolds
