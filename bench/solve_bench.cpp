@@ -56,7 +56,8 @@ BENCHMARK(BM_NearestWorkedExample);
 
 int registerExamples() {
   std::vector<std::string> files;
-  for (const char* dir : {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench"})
+  for (const char* dir :
+       {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench", RELPOS_DATA_DIR "/scenarios"})
     for (const auto& e : std::filesystem::directory_iterator(dir))
       if (e.path().extension() == ".json") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());

@@ -1,9 +1,8 @@
 // The separable matcher (PMF §V, Algorithm 1): matches the combined rotational set to a row of
 // Table III and the combined translational set to a row of Table IV, and emits one branch per
 // rotational solution.
-#include <algorithm>
-
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 
 #include "relpos/core/solution.hpp"
@@ -397,7 +396,8 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   const auto& ts = set.translational;
   int rows = 0;
   for (const auto& f : ts) {
-    if (f.kind == FundamentalKind::kPointPlane) rows += 1;
+    if (f.kind == FundamentalKind::kPointPlane)
+      rows += 1;
     else if (f.exact() && tol.zeroLength(f.value()))
       rows += f.kind == FundamentalKind::kPointLine ? 2 : 3;
     else
@@ -406,7 +406,8 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   if (rows > 3 || ts.size() > 3) return false;
   for (std::size_t i = 0; i < ts.size(); ++i)
     for (std::size_t j = i + 1; j < ts.size(); ++j)
-      if (ts[i].kind != FundamentalKind::kPointPoint && ts[j].kind != FundamentalKind::kPointPoint &&
+      if (ts[i].kind != FundamentalKind::kPointPoint &&
+          ts[j].kind != FundamentalKind::kPointPoint &&
           !holdsForEveryRotation(ts[i], ts[j], rots, tol,
                                  [](const Vector3d&, const Vector3d&) { return true; }))
         return false;
@@ -419,7 +420,8 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   int k = 0;
   for (const auto& f : ts) {
     const TShape s = shapeOf(f, R);
-    if (f.kind == FundamentalKind::kPointPlane) N.row(k++) = s.d.transpose();
+    if (f.kind == FundamentalKind::kPointPlane)
+      N.row(k++) = s.d.transpose();
     else if (f.kind == FundamentalKind::kPointLine) {
       N.row(k++) = s.e1.transpose();
       N.row(k++) = s.d.cross(s.e1).transpose();
@@ -432,6 +434,28 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   int rank = 0;
   for (int i = 0; i < 3; ++i) rank += sv[i] > 1e-9 * std::max(1.0, sv[0]);
   return rank == k;
+}
+
+// A point-line distance and a point-plane constraint on the same point, at least one of them a
+// range, with the plane's normal along the line for every rotation: a bounded cylinder.
+bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
+                          const RotationAlternatives& rots, TranslationPart& out) {
+  const auto& ts = set.translational;
+  if (ts.size() != 2 || (ts[0].exact() && ts[1].exact())) return false;
+  const int line = ts[0].kind == FundamentalKind::kPointLine ? 0 : 1;
+  const Fundamental& cyl = ts[line];
+  const Fundamental& pl = ts[1 - line];
+  if (cyl.kind != FundamentalKind::kPointLine || pl.kind != FundamentalKind::kPointPlane ||
+      (cyl.p - pl.p).norm() > tol.length || cyl.point_side != pl.point_side)
+    return false;
+  if (!holdsForEveryRotation(cyl, pl, rots, tol, [&](const Vector3d& d, const Vector3d& n) {
+        return d.cross(n).norm() <= tol.angle;
+      }))
+    return false;
+  out.kind = TranslationKind::kBoundedCylinder;
+  out.c1 = cyl;
+  out.c2 = pl;
+  return true;
 }
 
 // With the rotation known, every translational constraint confines T to a fixed shape: re-anchor
@@ -497,7 +521,8 @@ MatchResult matchSeparable(MatchContext& ctx) {
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
   if (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
-      !matchPlanes(ctx.set, ctx.tol, rots, trans))
+      !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
+      !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))
     return reanchorForEachRotation(ctx, rots);
   for (int k = 0; k < rots.count; ++k) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;

@@ -34,6 +34,8 @@ const char* toString(TranslationKind k) {
       return "Box";
     case TranslationKind::kPlanes:
       return "Planes";
+    case TranslationKind::kBoundedCylinder:
+      return "BoundedCylinder";
   }
   return "?";
 }
@@ -90,6 +92,8 @@ int TranslationPart::dof() const {
       return 3;
     case TranslationKind::kPlanes:
       return 3 - planeRows() + rangedPlanes();
+    case TranslationKind::kBoundedCylinder:
+      return 1 + !c1.exact() + !c2.exact();
   }
   return 0;
 }
@@ -137,6 +141,11 @@ Parameter TranslationPart::parameter(int i) const {
           return Parameter{"distance", ParamKind::kLength, f.lo, f.hi, false};
       return len;
     }
+    case TranslationKind::kBoundedCylinder:
+      if (i == 0) return ang;
+      if (i == 1 && !c1.exact())
+        return Parameter{"radius", ParamKind::kLength, c1.lo, c1.hi, false};
+      return Parameter{"height", ParamKind::kLength, c2.lo, c2.hi, false};
     case TranslationKind::kPoint:
     case TranslationKind::kPointOfLinePlane:
       break;
@@ -153,7 +162,7 @@ struct PlaneRows {
   Vector3d n[3];
   double h0[3] = {0, 0, 0};
   double sign[3] = {1, 1, 1};
-  int ranged[3] = {-1, -1, -1};  // index of the row's range parameter among the ranged planes
+  int ranged[3] = {-1, -1, -1};     // index of the row's range parameter among the ranged planes
   Vector3d e1 = Vector3d::UnitX();  // in-plane direction of the first plane (for k = 1)
 };
 
@@ -214,9 +223,7 @@ Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
 
 }  // namespace
 
-int TranslationPart::planeRows() const {
-  return planeRowsFor(linear, Matrix3d::Identity()).k;
-}
+int TranslationPart::planeRows() const { return planeRowsFor(linear, Matrix3d::Identity()).k; }
 
 int TranslationPart::rangedPlanes() const {
   int n = 0;
@@ -267,6 +274,17 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
     for (int j = 0; j < free; ++j) T += t[j] * dirs[j];
     return T;
   }
+  if (kind == TranslationKind::kBoundedCylinder) {
+    // Axis point at the plane's height, then out along the azimuth at the radius.
+    const TShape cyl = shapeOf(c1, R), pl = shapeOf(c2, R);
+    const double r = c1.exact() ? c1.value() : t[1];
+    const double v = c2.exact() ? 0.0 : t[c1.exact() ? 1 : 2];
+    const double sign = c2.point_side == Side::kMobile ? 1.0 : -1.0;
+    const double h = pl.d.dot(pl.c) + sign * v;  // the plane n·T = h
+    const Vector3d axis_point = cyl.c + ((h - pl.d.dot(cyl.c)) / pl.d.dot(cyl.d)) * cyl.d;
+    const Vector3d e2 = cyl.d.cross(cyl.e1);
+    return axis_point + r * (std::cos(t[0]) * cyl.e1 + std::sin(t[0]) * e2);
+  }
   const TShape s = shapeOf(c1, R);
   const Vector3d e2 = s.d.cross(s.e1);
   switch (kind) {
@@ -296,14 +314,15 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
       return linePlane(s.c, s.d, pl) + s.r * std::cos(t[0]) * a1 + b * std::sin(t[0]) * a2;
     }
     case TranslationKind::kShell:
-      return s.c + t[2] * Vector3d(std::cos(t[0]) * std::sin(t[1]),
-                                   std::sin(t[0]) * std::sin(t[1]), std::cos(t[1]));
+      return s.c + t[2] * Vector3d(std::cos(t[0]) * std::sin(t[1]), std::sin(t[0]) * std::sin(t[1]),
+                                   std::cos(t[1]));
     case TranslationKind::kThickCylinder:
       return s.c + t[0] * s.d + t[2] * (std::cos(t[1]) * s.e1 + std::sin(t[1]) * e2);
     case TranslationKind::kSlab:
       return s.c + t[0] * s.e1 + t[1] * e2 + slabSign() * t[2] * s.d;
     case TranslationKind::kFree:
     case TranslationKind::kPlanes:  // handled above
+    case TranslationKind::kBoundedCylinder:
       break;
   }
   return Vector3d::Zero();
@@ -332,6 +351,21 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     Vector3d dirs[2];
     const Vector3d P = planesPoint(rows, v, dirs);
     for (int j = 0; j < free; ++j) t[j] = dirs[j].dot(T - P);
+    return;
+  }
+  if (kind == TranslationKind::kBoundedCylinder) {
+    const TShape cyl = shapeOf(c1, R), pl = shapeOf(c2, R);
+    const Vector3d w = T - cyl.c;
+    const double along = w.dot(cyl.d);
+    const Vector3d perp = w - along * cyl.d;
+    const Vector3d e2 = cyl.d.cross(cyl.e1);
+    t[0] = std::atan2(perp.dot(e2), perp.dot(cyl.e1));
+    int k = 1;
+    if (!c1.exact()) t[k++] = std::min(c1.hi, std::max(c1.lo, perp.norm()));
+    if (!c2.exact()) {
+      const double sign = c2.point_side == Side::kMobile ? 1.0 : -1.0;
+      t[k] = std::min(c2.hi, std::max(c2.lo, sign * (pl.d.dot(T) - pl.d.dot(pl.c))));
+    }
     return;
   }
   const TShape s = shapeOf(c1, R);
@@ -394,6 +428,7 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     case TranslationKind::kPointOfLinePlane:
     case TranslationKind::kFree:
     case TranslationKind::kPlanes:  // handled above
+    case TranslationKind::kBoundedCylinder:
       return;
   }
 }

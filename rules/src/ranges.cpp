@@ -80,11 +80,9 @@ void parallelSlabs(const Fundamental& a, const Fundamental& b, const Tolerance& 
 
 void concentricSpheres(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                        RuleOutput& out) {
-  if (bothExact(a, b) || (a.p - b.p).norm() > tol.length || (a.q - b.q).norm() > tol.length)
-    return;
+  if (bothExact(a, b) || (a.p - b.p).norm() > tol.length || (a.q - b.q).norm() > tol.length) return;
   Interval both;
-  if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both))
-    one(out, distanceRange(a, both, tol));
+  if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both)) one(out, distanceRange(a, both, tol));
 }
 
 void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
@@ -94,14 +92,14 @@ void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Toleranc
   if (!tol.parallelUnit(a.d.cross(b.d).norm()) || (w - w.dot(a.d) * a.d).norm() > tol.length)
     return;
   Interval both;
-  if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both))
-    one(out, distanceRange(a, both, tol));
+  if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both)) one(out, distanceRange(a, both, tol));
 }
 
 std::vector<RuleCase> cases(const std::string& family, const char* what) {
-  return {{family + "/disjoint", std::string("Somani 004 Table VII, ") + what + ": disjoint ranges"},
-          {family + "/nested", std::string("Somani 004 Table VII, ") + what + ": nested ranges"},
-          {family + "/overlap", std::string("Somani 004 Table VII, ") + what + ": overlapping ranges"}};
+  return {
+      {family + "/disjoint", std::string("Somani 004 Table VII, ") + what + ": disjoint ranges"},
+      {family + "/nested", std::string("Somani 004 Table VII, ") + what + ": nested ranges"},
+      {family + "/overlap", std::string("Somani 004 Table VII, ") + what + ": overlapping ranges"}};
 }
 
 }  // namespace

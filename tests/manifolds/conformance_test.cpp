@@ -57,15 +57,18 @@ void expectManifoldInvariants(const Manifold& m, std::uint64_t seed, const std::
   }
 }
 
-TEST(ManifoldConformance, EveryExampleBranch) {
+TEST(ManifoldConformance, EveryBundledBranch) {
   int n = 0;
-  for (const auto& e : std::filesystem::directory_iterator(RELPOS_DATA_DIR "/examples")) {
-    if (e.path().extension() != ".json") continue;
-    ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
-    ASSERT_TRUE(r.problem);
-    Solution s = solve(*r.problem, builtinRegistry());
-    for (const Branch& b : s.branches) expectManifoldInvariants(*b.manifold, ++n, e.path().stem());
-  }
+  for (const char* dir :
+       {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/scenarios", RELPOS_DATA_DIR "/rules"})
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      if (e.path().extension() != ".json") continue;
+      ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
+      ASSERT_TRUE(r.problem);
+      Solution s = solve(*r.problem, builtinRegistry());
+      for (const Branch& b : s.branches)
+        expectManifoldInvariants(*b.manifold, ++n, e.path().stem());
+    }
   EXPECT_GT(n, 40);
 }
 
