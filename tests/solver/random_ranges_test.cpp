@@ -2,10 +2,11 @@
 // of distance and angle range solves, with one more DOF than its exact counterpart (the bounded
 // distance or angle becomes a parameter), contains the known pose, and every sampled pose stays
 // within the range. One-sided ranges too.
-#include <algorithm>
-#include <limits>
-
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
 
 #include "evaluator.hpp"
 #include "random_problems.hpp"
@@ -13,6 +14,60 @@
 
 namespace relpos::test {
 namespace {
+
+// Turns the last constraint of kp into a range around its value (two-sided or one-sided, within
+// what the spec accepts).
+void widenLast(KnownProblem& kp, const SingleKind& kind, Rng& rng, int sides) {
+  InputConstraint& c = kp.problem.constraints.back();
+  const std::string type = kind.type;
+  const double v = c.value;
+  c.has_value = false;
+  c.min = -std::numeric_limits<double>::infinity();
+  c.max = std::numeric_limits<double>::infinity();
+  const bool plane = kind.fixed == FeatureKind::kPlane || kind.mobile == FeatureKind::kPlane;
+  const bool line_plane = kind.fixed != kind.mobile;
+  double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+  if (type == "distance" && !plane) lo = 0.0;
+  if (type == "angle") lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
+  if (sides != 2) c.min = std::max(lo, v - rng.uniform(0.05, 0.4));
+  if (sides != 1) c.max = std::min(hi, v + rng.uniform(0.05, 0.4));
+}
+
+bool rangeable(const SingleKind& k) {
+  return std::string(k.type) == "distance" || std::string(k.type) == "angle";
+}
+
+// Pairs with ranges (a range and an exact constraint, or two ranges), on shared or fresh mobile
+// features: never inconsistent, never a violating pose, the known pose always on a branch.
+TEST(RandomRanges, PairsWithRanges) {
+  Rng rng(606);
+  const auto& kinds = singleKinds();
+  int solved = 0, total = 0;
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    for (std::size_t j = i; j < kinds.size(); ++j) {
+      if (!rangeable(kinds[i])) continue;
+      for (int variant = 0; variant < 2; ++variant, ++total) {
+        const bool grid = variant == 1;
+        KnownProblem kp = emptyKnownProblem(rng, grid);
+        addConstraint(kp, kinds[i], rng, grid);
+        widenLast(kp, kinds[i], rng, total % 3);
+        NamedFeature copy = kp.problem.mobile.features.back();
+        addConstraint(kp, kinds[j], rng, grid, variant == 1 ? &copy : nullptr);
+        if (rangeable(kinds[j]) && total % 2) widenLast(kp, kinds[j], rng, (total / 2) % 3);
+        SCOPED_TRACE(std::string(kinds[i].label) + " (range) + " + kinds[j].label);
+        ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9);
+        Solution s = solve(kp.problem, builtinRegistry());
+        ASSERT_NE(s.status, Status::kInconsistent) << s.message;
+        if (s.status != Status::kSolved) continue;
+        ++solved;
+        EXPECT_TRUE(someBranchContains(s, kp.X_WM_star))
+            << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
+        std::string where;
+        EXPECT_LT(worstSampledViolation(kp.problem, s, 16, 700 + total, &where), 1e-8) << where;
+      }
+    }
+  std::printf("[range pairs] solved %d of %d (%.1f%%)\n", solved, total, 100.0 * solved / total);
+}
 
 void runRanges(bool grid, std::uint64_t seed) {
   Rng rng(seed);
