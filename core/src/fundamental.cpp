@@ -12,8 +12,25 @@ const char* toString(FundamentalKind k) {
       return "point-plane";
     case FundamentalKind::kAngle:
       return "angle";
+    case FundamentalKind::kLineLine:
+      return "line-line";
   }
   return "?";
+}
+
+Fundamental Fundamental::lineLine(const Vector3d& a_m, const Vector3d& u_m, const Vector3d& a_f,
+                                  const Vector3d& d_f, double lo, double hi, SourceMask s) {
+  Fundamental f;
+  f.kind = FundamentalKind::kLineLine;
+  f.point_side = Side::kMobile;
+  f.p = a_m;
+  f.u = u_m.normalized();
+  f.q = a_f;
+  f.d = d_f.normalized();
+  f.lo = lo;
+  f.hi = hi;
+  f.sources = s;
+  return f;
 }
 
 Fundamental Fundamental::pointPoint(const Vector3d& p_m, const Vector3d& q_f, double v,

@@ -337,6 +337,7 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
         out.kind = TranslationKind::kSlab;
         return true;
       case FundamentalKind::kAngle:
+      case FundamentalKind::kLineLine:
         return false;
     }
   }
@@ -354,6 +355,7 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
         out.kind = TranslationKind::kPlane;
         return true;
       case FundamentalKind::kAngle:
+      case FundamentalKind::kLineLine:
         return false;
     }
   }
@@ -516,6 +518,8 @@ bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
 
 MatchResult matchSeparable(MatchContext& ctx) {
   if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
+  for (const auto& f : ctx.set.translational)
+    if (f.kind == FundamentalKind::kLineLine) return MatchResult::kNoMatch;  // mixed: not separable
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;

@@ -61,6 +61,7 @@ TShape shapeOf(const Fundamental& f, const Matrix3d& R) {
       s.kind = TShape::kPlane;
       break;
     case FundamentalKind::kAngle:
+    case FundamentalKind::kLineLine:
       break;
   }
   return s;
@@ -196,6 +197,7 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
         for (int a = 0; a < 3; ++a) add(Vector3d::Unit(a), s.c[a], 1.0, -1);
         break;
       case FundamentalKind::kAngle:
+      case FundamentalKind::kLineLine:
         break;
     }
   }

@@ -23,5 +23,6 @@ void registerBuiltins(Registry& r) {
   rules::registerBuiltinConstraintTypes(r);
   rules::registerBuiltinRules(r);
   manifolds::registerBuiltinManifolds(r);
+  manifolds::registerMixedManifolds(r);
 }
 }  // namespace relpos

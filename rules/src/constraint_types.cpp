@@ -88,9 +88,12 @@ void applyRange(const InputConstraint& c, Decomposition& out) {
 void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s,
                        Decomposition& out) {
   const bool range = isProperRange(c);
-  if (range && F.kind == K::kLine && c.mobile.kind == K::kLine && !c.parallel) {
-    out.unhandled = "a range on the skew (non-parallel) line-line distance is a mixed constraint";
-    return;
+  if (F.kind == K::kLine && c.mobile.kind == K::kLine && !c.parallel) {
+    // Somani's mixed constraint: the skew distance between the lines, no parallelism required.
+    const double lo = range ? std::max(0.0, c.min) : (c.has_value ? c.value : c.min);
+    const double hi = range ? c.max : lo;
+    return single(out, Fundamental::lineLine(c.mobile.point, c.mobile.direction, F.point,
+                                             F.direction, lo, hi, s));
   }
   decomposeDistanceValue(c, F, s, range ? 0.0 : (c.has_value ? c.value : c.min), out);
   if (range && !out.unhandled) applyRange(c, out);
@@ -101,10 +104,6 @@ void decomposeDistanceValue(const InputConstraint& c, const Feature& F, SourceMa
   const Feature& M = c.mobile;
   if (isPointKind(F.kind) || isPointKind(M.kind)) return single(out, pointDistance(F, M, v, s));
   if (F.kind == K::kLine && M.kind == K::kLine) {
-    if (!c.parallel) {
-      out.unhandled = "the skew (non-parallel) line-line distance is a mixed constraint";
-      return;
-    }
     // Table I: d(L_a, L_b) = p -> d(R_a, L_b) = p and the lines parallel.
     Fundamental t = Fundamental::pointLine(Side::kMobile, M.point, F.point, F.direction, v, s);
     return parallelAlternatives(c.orientation, M.direction, F.direction, s, &t, out);
@@ -180,8 +179,10 @@ void decomposeTangent(const InputConstraint& c, const Feature& F, SourceMask s,
     return parallelAlternatives(Orientation::kEither, M.direction, F.direction, s, &t, out);
   }
   if (F.kind == K::kLine || M.kind == K::kLine) {
-    out.unhandled = "cylinder-line tangency is a mixed (non-separable) constraint";
-    return;
+    // The line touches the surface: the skew distance between axis and line is the radius
+    // (a mixed constraint, Somani 004 §IV-A).
+    const double r = F.kind == K::kCylinder ? F.radius : M.radius;
+    return single(out, Fundamental::lineLine(M.point, M.direction, F.point, F.direction, r, r, s));
   }
   // cylinder–plane: axis ∥ plane, signed axis distance −r (aligned) or +r (opposed).
   const Feature& cyl = F.kind == K::kCylinder ? F : M;

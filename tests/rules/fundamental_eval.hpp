@@ -21,6 +21,13 @@ inline double fundamentalResidual(const Fundamental& f, const Isometry3d& X) {
       return std::abs((p - q).cross(d).norm() - f.value());
     case FundamentalKind::kPointPlane:
       return std::abs((p - q).dot(d) - f.value());
+    case FundamentalKind::kLineLine: {  // skew distance between R·(p, u) + T and (q, d)
+      const Vector3d a = R * f.p + T, u = R * f.u;
+      const Vector3d n = u.cross(f.d);
+      const double dist =
+          n.norm() < 1e-12 ? (a - f.q).cross(f.d).norm() : std::abs((a - f.q).dot(n)) / n.norm();
+      return dist < f.lo ? f.lo - dist : (dist > f.hi ? dist - f.hi : 0.0);
+    }
     case FundamentalKind::kAngle: {
       const Vector3d u = R * f.p;
       return std::abs(std::atan2(u.cross(f.q).norm(), u.dot(f.q)) - f.value());

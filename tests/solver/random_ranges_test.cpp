@@ -27,14 +27,15 @@ void widenLast(KnownProblem& kp, const SingleKind& kind, Rng& rng, int sides) {
   const bool plane = kind.fixed == FeatureKind::kPlane || kind.mobile == FeatureKind::kPlane;
   const bool line_plane = kind.fixed != kind.mobile;
   double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
-  if (type == "distance" && !plane) lo = 0.0;
+  if ((type == "distance" || type == "skew-distance") && !plane) lo = 0.0;
   if (type == "angle") lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
   if (sides != 2) c.min = std::max(lo, v - rng.uniform(0.05, 0.4));
   if (sides != 1) c.max = std::min(hi, v + rng.uniform(0.05, 0.4));
 }
 
 bool rangeable(const SingleKind& k) {
-  return std::string(k.type) == "distance" || std::string(k.type) == "angle";
+  const std::string t = k.type;
+  return t == "distance" || t == "angle" || t == "skew-distance";
 }
 
 // Pairs with ranges (a range and an exact constraint, or two ranges), on shared or fresh mobile
@@ -73,26 +74,12 @@ void runRanges(bool grid, std::uint64_t seed) {
   Rng rng(seed);
   int n = 0;
   for (const SingleKind& kind : singleKinds()) {
-    const std::string type = kind.type;
-    if (type != "distance" && type != "angle") continue;
+    if (!rangeable(kind)) continue;
     for (int k = 0; k < 12; ++k, ++n) {
       KnownProblem kp = emptyKnownProblem(rng, grid);
       addConstraint(kp, kind, rng, grid);
-      InputConstraint& c = kp.problem.constraints.back();
-      // Widen the exact value into a range around it: two-sided, only min, or only max.
-      const double v = c.value;
-      c.has_value = false;
-      c.min = -std::numeric_limits<double>::infinity();
-      c.max = std::numeric_limits<double>::infinity();
-      const int sides = k % 3;
-      // Keep within what the spec accepts: unsigned distances >= 0, angles in their interval.
-      const bool plane = kind.fixed == FeatureKind::kPlane || kind.mobile == FeatureKind::kPlane;
-      const bool line_plane = kind.fixed != kind.mobile;
-      double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
-      if (type == "distance" && !plane) lo = 0.0;
-      if (type == "angle") lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
-      if (sides != 2) c.min = std::max(lo, v - rng.uniform(0.05, 0.4));
-      if (sides != 1) c.max = std::min(hi, v + rng.uniform(0.05, 0.4));
+      widenLast(kp, kind, rng, k % 3);  // two-sided, only min, or only max
+      const InputConstraint& c = kp.problem.constraints.back();
       SCOPED_TRACE(std::string(kind.label) + " range [" + std::to_string(c.min) + ", " +
                    std::to_string(c.max) + "] #" + std::to_string(k));
       ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9);

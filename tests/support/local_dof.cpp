@@ -36,6 +36,12 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
       out.push_back(x.norm() - dist);
   };
   auto parallel = [&](const Vector3d& a, const Vector3d& b) { vec(a.cross(b)); };
+  // Skew distance: the signed offset along the common normal (smooth where the lines meet).
+  auto skew = [&](const W& l1, const W& l2, double dist) {
+    const Vector3d n = l1.d.cross(l2.d);
+    const double signed_offset = (l2.a - l1.a).dot(n) / n.norm();
+    out.push_back(std::abs(dist) < 1e-12 ? signed_offset : std::abs(signed_offset) - dist);
+  };
   auto angleRes = [&](const Vector3d& a, const Vector3d& b, double cos_v) {
     if (std::abs(std::abs(cos_v) - 1) < 1e-12)
       parallel(a, b);
@@ -69,6 +75,7 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
       }
     }
     if (F.kind == K::kLine && M.kind == K::kLine) {
+      if (!c.parallel) return skew(M, F, val);
       parallel(M.d, F.d);
       return pointLine(M.a, F, val);
     }
@@ -91,6 +98,7 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
       return;
     }
     const W& C = F.kind == K::kCylinder ? F : M;
+    if (F.kind == K::kLine || M.kind == K::kLine) return skew(C, F.kind == K::kLine ? F : M, C.r);
     const double s = (C.a - Pl.a).dot(Pl.d);
     out.push_back(C.d.dot(Pl.d));
     out.push_back(std::abs(s + C.r) < std::abs(s - C.r) ? s + C.r : s - C.r);

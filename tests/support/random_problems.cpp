@@ -92,6 +92,9 @@ const std::vector<SingleKind>& singleKinds() {
       {"tangent", K::kPlane, K::kCylinder, O::kAligned, 4, 1, "tangent plane(f)-cylinder(m)"},
       {"tangent", K::kCylinder, K::kPlane, O::kOpposed, 4, 1, "tangent cylinder(f)-plane(m)"},
       {"tangent", K::kCylinder, K::kCylinder, O::kAligned, 3, 2, "tangent cylinder-cylinder"},
+      {"skew-distance", K::kLine, K::kLine, O::kAligned, 5, 1, "skew distance line-line"},
+      {"tangent", K::kCylinder, K::kLine, O::kAligned, 5, 1, "tangent cylinder(f)-line(m)"},
+      {"tangent", K::kLine, K::kCylinder, O::kAligned, 5, 1, "tangent line(f)-cylinder(m)"},
   };
   return k;
 }
@@ -237,6 +240,20 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
       fW.direction = sgn * mW.direction;
     else
       fW.direction = rng.perpendicular(mW.direction);
+  } else if (t == "skew-distance" ||
+             (t == "tangent" && (kind.fixed == K::kLine || kind.mobile == K::kLine))) {
+    // Fixed line (or axis) at distance v from the mobile line (or axis) along their common
+    // perpendicular.
+    v = t == "skew-distance" ? valueDistance(false)
+                             : (kind.fixed == K::kCylinder ? fW.radius : mW.radius);
+    // Not parallel: near parallel lines the skew distance jumps (tilting one line within their
+    // common plane makes them meet), so rounding noise would break the known solution.
+    do {
+      fW.direction = rng.unitOrAxis(grid);
+    } while (mW.direction.cross(fW.direction).norm() < 0.1);
+    const Vector3d perp = mW.direction.cross(fW.direction);
+    fW.point = mW.point + rng.uniform(-1, 1) * mW.direction + v * perp.normalized() +
+               rng.uniform(-1, 1) * fW.direction;
   } else if (t == "tangent") {
     if (kind.fixed == K::kCylinder && kind.mobile == K::kCylinder) {
       fW.direction = (rng.integer(0, 1) ? 1.0 : -1.0) * mW.direction;
@@ -259,6 +276,12 @@ void addConstraint(KnownProblem& kp, const SingleKind& kind, Rng& rng, bool grid
     }
   }
   c.value = c.min = c.max = v;
+  if (t == "skew-distance") {
+    c.type = "distance";
+    c.parallel = false;
+  }
+  if (t == "tangent" && (kind.fixed == K::kLine || kind.mobile == K::kLine))
+    c.value = c.min = c.max = 0.0;
   c.fixed = fW.placed(X_WF.inverse());
   if (kp.noise > 0) {
     // Rounding-level noise on the fixed feature (as data exported with finite precision), so the

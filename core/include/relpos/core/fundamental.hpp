@@ -19,8 +19,12 @@ enum class FundamentalKind : unsigned char {
   kPointLine = 1,   // distance(p, line(q, d)) in [lo, hi]
   kPointPlane = 2,  // (p - q) . d in [lo, hi], plane (q, d); exact ones are normalised to 0
   kAngle = 3,       // angle(R u_m, u_f) in [lo, hi]
+  // Somani's mixed constraint: the (skew) distance between a mobile line (p, u) and a fixed line
+  // (q, d) in [lo, hi]. Neither purely rotational nor translational; kept in C_T, never combined
+  // by the PMF rules, solved by the mixed-manifold matcher.
+  kLineLine = 4,
 };
-inline constexpr int kFundamentalKinds = 4;
+inline constexpr int kFundamentalKinds = 5;
 const char* toString(FundamentalKind k);
 
 enum class Side : unsigned char { kFixed, kMobile };
@@ -35,6 +39,7 @@ struct Fundamental {
   Vector3d p = Vector3d::Zero();
   Vector3d q = Vector3d::Zero();
   Vector3d d = Vector3d::UnitZ();
+  Vector3d u = Vector3d::UnitZ();  // kLineLine: the mobile line's direction
   double lo = 0.0, hi = 0.0;
   SourceMask sources = 0;
   std::uint16_t id = 0;  // identity within a constraint set (assigned by ConstraintSet::add)
@@ -50,6 +55,8 @@ struct Fundamental {
   static Fundamental pointPlane(Side point_side, const Vector3d& p, const Vector3d& a,
                                 const Vector3d& n, double v, SourceMask s);
   static Fundamental angle(const Vector3d& u_m, const Vector3d& u_f, double alpha, SourceMask s);
+  static Fundamental lineLine(const Vector3d& a_m, const Vector3d& u_m, const Vector3d& a_f,
+                              const Vector3d& d_f, double lo, double hi, SourceMask s);
 };
 
 // Capacity of a constraint set: twice the 8 constraints of the allocation-free target leaves

@@ -7,11 +7,11 @@
 namespace relpos::manifolds {
 
 enum class RotationKind : unsigned char {
-  kFixed,        // 0 DOF: two parallelisms, three angles on right trihedra, discrete solutions
-  kOneParallel,  // 1 DOF: R(φ) = R(u_f, φ) R0, R0 u_m = u_f            (PMF eq. 3)
-  kOneAngle,     // 2 DOF: R(φ, θ) = R(u_f, φ) R0 R(u_m, θ)              (PMF eq. 4)
-  kTwoAngle,     // 1 DOF: R(φ) = R(u_f, φ) R0 R(u_m, θ(φ)), φ in [lo, hi] (App. III-D)
-  kFree,         // 3 DOF: R = Rz(yaw) Ry(pitch) Rx(roll)                (PMF eq. 5)
+  kFixed,          // 0 DOF: two parallelisms, three angles on right trihedra, discrete solutions
+  kOneParallel,    // 1 DOF: R(φ) = R(u_f, φ) R0, R0 u_m = u_f            (PMF eq. 3)
+  kOneAngle,       // 2 DOF: R(φ, θ) = R(u_f, φ) R0 R(u_m, θ)              (PMF eq. 4)
+  kTwoAngle,       // 1 DOF: R(φ) = R(u_f, φ) R0 R(u_m, θ(φ)), φ in [lo, hi] (App. III-D)
+  kFree,           // 3 DOF: R = Rz(yaw) Ry(pitch) Rx(roll)                (PMF eq. 5)
   kOneAngleRange,  // 3 DOF: R(φ, θ, α) = R(u_f, φ) R0(α) R(u_m, θ), α in [lo, hi]
                    // (Somani's OneAngleMinMax, 004 Table VI)
 };
