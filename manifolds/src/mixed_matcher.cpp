@@ -4,18 +4,80 @@
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
 #include "relpos/manifolds/line_distance.hpp"
+#include "relpos/manifolds/radial_grasp.hpp"
 
 namespace relpos::manifolds {
 namespace {
 
+bool parallelUnit(const Vector3d& a, const Vector3d& b, const Tolerance& tol) {
+  return a.cross(b).norm() <= tol.angle;
+}
+
+// The radial grasp (Somani 004 §VI-C, D): the approach line meets the axis (skew distance 0) at a
+// right angle, the fingertip on the approach line at a distance (range) from the axis, and
+// optionally at a height (range) along it. Returns false unless the set is exactly that.
+bool radialGrasp(const ConstraintSet& set, const Tolerance& tol, RadialGraspSpec* spec) {
+  const Fundamental* ll = nullptr;
+  const Fundamental* pl = nullptr;
+  const Fundamental* pp = nullptr;
+  for (const auto& f : set.translational) {
+    const Fundamental** slot = f.kind == FundamentalKind::kLineLine     ? &ll
+                               : f.kind == FundamentalKind::kPointLine  ? &pl
+                               : f.kind == FundamentalKind::kPointPlane ? &pp
+                                                                        : nullptr;
+    if (!slot || *slot) return false;
+    *slot = &f;
+  }
+  if (!ll || !pl || set.rotational.size() != 1) return false;
+  const Fundamental& a = set.rotational[0];
+  if (!ll->exact() || !tol.zeroLength(ll->lo) || !a.exact() ||
+      !tol.equalAngle(a.value(), kPi / 2) || !parallelUnit(a.p, ll->u, tol) ||
+      !parallelUnit(a.q, ll->d, tol))
+    return false;
+  // The fingertip's distance is measured from the same axis, and the tip is on the approach line.
+  const Vector3d w = pl->q - ll->q;
+  if (pl->point_side != Side::kMobile || !parallelUnit(pl->d, ll->d, tol) ||
+      (w - w.dot(ll->d) * ll->d).norm() > tol.length ||
+      (pl->p - ll->p).cross(ll->u).norm() > tol.length)
+    return false;
+  if (pp && (pp->point_side != Side::kMobile || (pp->p - pl->p).norm() > tol.length ||
+             !parallelUnit(pp->d, ll->d, tol)))
+    return false;
+  spec->axis_point = ll->q;
+  spec->axis_dir = ll->d;
+  spec->tip = pl->p;
+  spec->approach = ll->u;
+  spec->r_lo = pl->lo;
+  spec->r_hi = pl->hi;
+  spec->has_height = pp != nullptr;
+  if (pp) {
+    spec->plane_point = pp->q;
+    spec->plane_normal = pp->d;
+    spec->h_lo = pp->lo;
+    spec->h_hi = pp->hi;
+  }
+  return true;
+}
+
 MatchResult matchMixed(MatchContext& ctx) {
   const auto& ts = ctx.set.translational;
-  if (!ctx.set.rotational.empty() || ts.size() != 1 || ts[0].kind != FundamentalKind::kLineLine)
-    return MatchResult::kNoMatch;
-  if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
-  ctx.out.branches.emplace_back();
-  ctx.out.branches.back().manifold.emplace<LineDistanceManifold>(ts[0]);
-  return MatchResult::kMatched;
+  if (ctx.set.rotational.empty() && ts.size() == 1 && ts[0].kind == FundamentalKind::kLineLine) {
+    if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
+    ctx.out.branches.emplace_back();
+    ctx.out.branches.back().manifold.emplace<LineDistanceManifold>(ts[0]);
+    return MatchResult::kMatched;
+  }
+  RadialGraspSpec spec;
+  if (radialGrasp(ctx.set, ctx.tol, &spec)) {
+    for (double sigma : {1.0, -1.0}) {
+      if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
+      spec.sigma = sigma;
+      ctx.out.branches.emplace_back();
+      ctx.out.branches.back().manifold.emplace<RadialGraspManifold>(spec);
+    }
+    return MatchResult::kMatched;
+  }
+  return MatchResult::kNoMatch;
 }
 
 }  // namespace
@@ -25,6 +87,10 @@ void registerMixedManifolds(Registry& registry) {
       {"mixed/LineDistance",
        "5 DOF (6 with a range): a mobile line at a skew distance from a fixed line, "
        "as a chain Rz Tz Tx Rx Tz Rz (Somani 004 §IV-A)"});
+  registry.addManifold(
+      {"mixed/RadialGrasp",
+       "2-4 DOF: an approach line meeting a fixed axis at a right angle, the "
+       "fingertip on it at a distance (range) and height (range) (Somani 004 §VI)"});
   registry.addMatcher({"mixed", &matchMixed});
 }
 

@@ -8,7 +8,7 @@ namespace relpos::test {
 namespace {
 
 TEST(Scenarios, MatchExpectedStatusAndDof) {
-  EXPECT_EQ(checkFolderAgainstExpectations("scenarios", "scenarios.json"), 4);
+  EXPECT_EQ(checkFolderAgainstExpectations("scenarios", "scenarios.json"), 5);
 }
 
 }  // namespace

@@ -1,0 +1,48 @@
+#pragma once
+// A mixed manifold (Somani 004 §VI-C/D): the radial grasp of a cylinder. The mobile approach line
+// meets a fixed axis at a right angle, and a fingertip on the approach line lies at a distance r
+// (exact or ranged) from the axis and at a height h (exact, ranged, or free) along it:
+//   X_WM = F · Rz(ψ) · T(r, 0, z(h)) · A_σ · Rz(θ) · L⁻¹
+// F: the axis frame (z along the axis); A_σ turns the line's z onto ±x (the approach line points
+// away from or at the axis: two branches); θ spins the object about its approach line;
+// L: the frame of the approach line at the fingertip in the mobile object.
+#include <string>
+
+#include "relpos/core/fundamental.hpp"
+#include "relpos/core/manifold.hpp"
+
+namespace relpos::manifolds {
+
+struct RadialGraspSpec {
+  Vector3d axis_point, axis_dir;       // fixed axis (world)
+  Vector3d tip, approach;              // fingertip and approach direction (mobile frame)
+  double r_lo = 0.0, r_hi = 0.0;       // distance of the tip from the axis
+  bool has_height = false;             // a point-plane constraint on the tip
+  Vector3d plane_point, plane_normal;  // its plane (world), normal along the axis
+  double h_lo = 0.0, h_hi = 0.0;       // its signed value
+  double sigma = 1.0;                  // approach direction: +1 away from the axis, -1 towards
+};
+
+class RadialGraspManifold final : public ManifoldBase<RadialGraspManifold> {
+ public:
+  explicit RadialGraspManifold(const RadialGraspSpec& spec);
+  const char* typeName() const override { return "RadialGrasp"; }
+  int dof() const override;
+  int rotationalDof() const override { return -1; }
+  int translationalDof() const override { return -1; }
+  Parameter parameter(int i) const override;
+  Isometry3d pose(const Params& theta) const override;
+  Params project(const Isometry3d& X) const override;
+  std::string describe() const override;
+
+ private:
+  bool rRanged() const { return s_.r_lo != s_.r_hi; }
+  // The height is a parameter when ranged or unconstrained.
+  bool hFree() const { return !s_.has_height || s_.h_lo != s_.h_hi; }
+  double axisHeightOf(double h) const;  // z along the axis for a plane value h
+  double planeValueOf(double z) const;
+  RadialGraspSpec s_;
+  Isometry3d F_, L_inv_, A_;
+};
+
+}  // namespace relpos::manifolds

@@ -1,0 +1,103 @@
+#include "relpos/manifolds/radial_grasp.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace relpos::manifolds {
+namespace {
+
+Isometry3d lineFrame(const Vector3d& a, const Vector3d& d) {
+  Isometry3d X = Isometry3d::Identity();
+  const Vector3d x = anyPerpendicular(d);
+  X.linear().col(0) = x;
+  X.linear().col(1) = d.cross(x);
+  X.linear().col(2) = d;
+  X.translation() = a;
+  return X;
+}
+
+Isometry3d rotZ(double a) {
+  Isometry3d X = Isometry3d::Identity();
+  X.linear() = axisAngle(Vector3d::UnitZ(), a);
+  return X;
+}
+
+}  // namespace
+
+RadialGraspManifold::RadialGraspManifold(const RadialGraspSpec& spec)
+    : s_(spec),
+      F_(lineFrame(spec.axis_point, spec.axis_dir)),
+      L_inv_(lineFrame(spec.tip, spec.approach).inverse()),
+      A_(Isometry3d::Identity()) {
+  // z onto σx: a quarter turn about y (σ = +1) or its opposite.
+  A_.linear() = axisAngle(Vector3d::UnitY(), spec.sigma * kPi / 2);
+}
+
+int RadialGraspManifold::dof() const { return 2 + rRanged() + hFree(); }
+
+// Order: psi, [height], [radius], theta.
+Parameter RadialGraspManifold::parameter(int i) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (i == 0) return Parameter{"psi", ParamKind::kAngle, -kPi, kPi, true};
+  int k = 1;
+  if (hFree() && i == k++)
+    return s_.has_height ? Parameter{"height", ParamKind::kLength, s_.h_lo, s_.h_hi, false}
+                         : Parameter{"height", ParamKind::kLength, -inf, inf, false};
+  if (rRanged() && i == k++)
+    return Parameter{"radius", ParamKind::kLength, s_.r_lo, s_.r_hi, false};
+  return Parameter{"theta", ParamKind::kAngle, -kPi, kPi, true};
+}
+
+double RadialGraspManifold::axisHeightOf(double h) const {
+  if (!s_.has_height) return h;
+  // (a + z d − q)·n = h along the axis frame's z.
+  return (h - (s_.axis_point - s_.plane_point).dot(s_.plane_normal)) /
+         s_.axis_dir.dot(s_.plane_normal);
+}
+
+double RadialGraspManifold::planeValueOf(double z) const {
+  if (!s_.has_height) return z;
+  return z * s_.axis_dir.dot(s_.plane_normal) +
+         (s_.axis_point - s_.plane_point).dot(s_.plane_normal);
+}
+
+Isometry3d RadialGraspManifold::pose(const Params& th) const {
+  int k = 1;
+  const double h = hFree() ? th[k++] : s_.h_lo;
+  const double r = rRanged() ? th[k++] : s_.r_lo;
+  const double theta = th[k];
+  Isometry3d T = Isometry3d::Identity();
+  T.translation() = Vector3d(r, 0.0, axisHeightOf(h));
+  return F_ * rotZ(th[0]) * T * A_ * rotZ(theta) * L_inv_;
+}
+
+Params RadialGraspManifold::project(const Isometry3d& X) const {
+  Params th{};
+  const Vector3d tip = F_.inverse() * (X * s_.tip);  // fingertip in the axis frame
+  th[0] = std::atan2(tip.y(), tip.x());
+  int k = 1;
+  double h = s_.h_lo;
+  if (hFree()) {
+    h = planeValueOf(tip.z());
+    if (s_.has_height) h = std::min(s_.h_hi, std::max(s_.h_lo, h));
+    th[k++] = h;
+  }
+  double r = s_.r_lo;
+  if (rRanged()) {
+    r = std::min(s_.r_hi, std::max(s_.r_lo, std::hypot(tip.x(), tip.y())));
+    th[k++] = r;
+  }
+  Isometry3d T = Isometry3d::Identity();
+  T.translation() = Vector3d(r, 0.0, axisHeightOf(h));
+  const Isometry3d rest = (F_ * rotZ(th[0]) * T * A_).inverse() * X * L_inv_.inverse();
+  th[k] = std::atan2(rest.linear()(1, 0), rest.linear()(0, 0));
+  return th;
+}
+
+std::string RadialGraspManifold::describe() const {
+  return std::string("mixed RadialGrasp (approach ") + (s_.sigma > 0 ? "away from" : "towards") +
+         " the axis)";
+}
+
+}  // namespace relpos::manifolds
