@@ -4,35 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "chain.hpp"
+
 namespace relpos::manifolds {
-namespace {
-
-// A frame at point a with its z axis along unit d (x from anyPerpendicular, deterministic).
-Isometry3d lineFrame(const Vector3d& a, const Vector3d& d) {
-  Isometry3d X = Isometry3d::Identity();
-  const Vector3d x = anyPerpendicular(d);
-  X.linear().col(0) = x;
-  X.linear().col(1) = d.cross(x);
-  X.linear().col(2) = d;
-  X.translation() = a;
-  return X;
-}
-
-Isometry3d rot(int axis, double angle) {
-  Isometry3d X = Isometry3d::Identity();
-  X.linear() = axisAngle(Vector3d::Unit(axis), angle);
-  return X;
-}
-
-Isometry3d trans(int axis, double length) {
-  Isometry3d X = Isometry3d::Identity();
-  X.translation()[axis] = length;
-  return X;
-}
-
-enum Param { kPsi, kT, kGamma, kS, kOmega };
-
-}  // namespace
+using detail::lineFrame;
+using detail::rot;
+using detail::trans;
 
 LineDistanceManifold::LineDistanceManifold(const Fundamental& f)
     : F_(lineFrame(f.q, f.d)), L_inv_(lineFrame(f.p, f.u).inverse()), lo_(f.lo), hi_(f.hi) {}

@@ -4,26 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "chain.hpp"
+
 namespace relpos::manifolds {
-namespace {
-
-Isometry3d lineFrame(const Vector3d& a, const Vector3d& d) {
-  Isometry3d X = Isometry3d::Identity();
-  const Vector3d x = anyPerpendicular(d);
-  X.linear().col(0) = x;
-  X.linear().col(1) = d.cross(x);
-  X.linear().col(2) = d;
-  X.translation() = a;
-  return X;
-}
-
-Isometry3d rotZ(double a) {
-  Isometry3d X = Isometry3d::Identity();
-  X.linear() = axisAngle(Vector3d::UnitZ(), a);
-  return X;
-}
-
-}  // namespace
+using detail::lineFrame;
+using detail::rot;
 
 RadialGraspManifold::RadialGraspManifold(const RadialGraspSpec& spec)
     : s_(spec),
@@ -69,7 +54,7 @@ Isometry3d RadialGraspManifold::pose(const Params& th) const {
   const double theta = th[k];
   Isometry3d T = Isometry3d::Identity();
   T.translation() = Vector3d(r, 0.0, axisHeightOf(h));
-  return F_ * rotZ(th[0]) * T * A_ * rotZ(theta) * L_inv_;
+  return F_ * rot(2, th[0]) * T * A_ * rot(2, theta) * L_inv_;
 }
 
 Params RadialGraspManifold::project(const Isometry3d& X) const {
@@ -90,7 +75,7 @@ Params RadialGraspManifold::project(const Isometry3d& X) const {
   }
   Isometry3d T = Isometry3d::Identity();
   T.translation() = Vector3d(r, 0.0, axisHeightOf(h));
-  const Isometry3d rest = (F_ * rotZ(th[0]) * T * A_).inverse() * X * L_inv_.inverse();
+  const Isometry3d rest = (F_ * rot(2, th[0]) * T * A_).inverse() * X * L_inv_.inverse();
   th[k] = std::atan2(rest.linear()(1, 0), rest.linear()(0, 0));
   return th;
 }
