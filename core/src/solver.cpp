@@ -225,25 +225,13 @@ void listBits(SourceMask m, std::vector<int>& out) {
 
 }  // namespace
 
-void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
-           Workspace& ws, Solution& solution) {
-  const auto t0 = std::chrono::steady_clock::now();
-  solution.clear();
-  if (ws.pending.capacity() < static_cast<std::size_t>(options.max_branches))
-    ws.pending.reserve(static_cast<std::size_t>(options.max_branches));
-  const Tolerance tol =
-      Tolerance::forScale(problem.lengthScale(), options.length_tolerance, options.angle_tolerance);
-  SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
+namespace {
 
-  std::string why;
-  if (!options.isValid(&why)) {
-    setUnhandled(st, "invalid solver options: " + why);
-  } else if (problem.constraints.size() > 64) {
-    setUnhandled(st, "more than 64 constraints");
-  } else {
-    decomposeAll(problem, st);
-  }
-
+// Combines and matches every set in ws.pending (the list grows as sets branch or defer), then
+// turns what happened into the solution's status.
+void runPending(SolveState& st) {
+  Workspace& ws = st.ws;
+  Solution& solution = st.solution;
   SourceMask redundant = ~SourceMask{0};
   bool any_solved_set = false;
   for (std::size_t s = 0; !st.any_unhandled && s < ws.pending.size(); ++s) {
@@ -259,8 +247,8 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
     const ConstraintSet& set = ws.pending[s];
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
-    for (const MatcherInfo& m : registry.matchers()) {
-      MatchContext ctx{set, tol, solution, &deferSet, &st};
+    for (const MatcherInfo& m : st.registry.matchers()) {
+      MatchContext ctx{set, st.tol, solution, &deferSet, &st};
       r = m.fn(ctx);
       if (r == MatchResult::kInconsistent) {
         st.conflicts |= ctx.conflict;
@@ -297,8 +285,43 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
     listBits(st.conflicts, solution.conflicts);
     solution.message = st.conflict_reason;
   }
+}
+
+void prepare(const SolverOptions& options, Workspace& ws, Solution& solution) {
+  solution.clear();
+  if (ws.pending.capacity() < static_cast<std::size_t>(options.max_branches))
+    ws.pending.reserve(static_cast<std::size_t>(options.max_branches));
+}
+
+}  // namespace
+
+void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
+           Workspace& ws, Solution& solution) {
+  const auto t0 = std::chrono::steady_clock::now();
+  prepare(options, ws, solution);
+  const Tolerance tol =
+      Tolerance::forScale(problem.lengthScale(), options.length_tolerance, options.angle_tolerance);
+  SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
+  std::string why;
+  if (!options.isValid(&why)) {
+    setUnhandled(st, "invalid solver options: " + why);
+  } else if (problem.constraints.size() > 64) {
+    setUnhandled(st, "more than 64 constraints");
+  } else {
+    decomposeAll(problem, st);
+  }
+  runPending(st);
   solution.solve_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Registry& registry,
+                        const SolverOptions& options, Workspace& ws, Solution& solution) {
+  prepare(options, ws, solution);
+  SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
+  ws.pending.clear();
+  ws.pending.push_back(set);
+  runPending(st);
 }
 
 Solution solve(const Problem& problem, const Registry& registry, const SolverOptions& options) {

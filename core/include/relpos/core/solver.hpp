@@ -35,6 +35,11 @@ class Workspace {
 void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
            Workspace& workspace, Solution& solution);
 
+// Combines and synthesises a set of fundamental constraints directly (no decomposition): for rule
+// and plugin test kits, which check what a rule's output set admits.
+void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Registry& registry,
+                        const SolverOptions& options, Workspace& workspace, Solution& solution);
+
 // Convenience: a fresh workspace and solution.
 Solution solve(const Problem& problem, const Registry& registry,
                const SolverOptions& options = SolverOptions());
