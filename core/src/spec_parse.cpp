@@ -468,8 +468,12 @@ class Parser {
           pb.obstacles.push_back(o);
         }
     }
-    if (j.contains("plugins") && !j["plugins"].is_array())
-      error("plugins", "expected an array of plugin paths");
+    if (j.contains("plugins")) {
+      if (!j["plugins"].is_array())
+        error("plugins", "expected an array of plugin paths");
+      else if (!j["plugins"].empty())
+        warn("plugins", "plugin loading is not available in this version (ignored)");
+    }
     if (j.contains("constraints")) {
       const json& cs = j["constraints"];
       if (!cs.is_array()) {

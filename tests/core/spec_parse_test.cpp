@@ -192,6 +192,15 @@ TEST(SpecParse, UnknownFieldsAreWarnings) {
   EXPECT_EQ(r.warnings[0].path, "constraints[0].colour");
 }
 
+TEST(SpecParse, PluginListIsAcceptedWithAWarning) {
+  std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
+  s.insert(s.find("\"fixed\""), R"("plugins": ["libsymmetric.so"], )");
+  ParseResult r = parse(s);
+  ASSERT_TRUE(r.problem);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].path, "plugins");
+}
+
 TEST(SpecParse, EveryProblemIsReportedAtOnce) {
   ParseResult r = parse(spec(R"({"type": "welded", "fixed": "K", "mobile": "tcp"},
                                 {"type": "coincident", "fixed": "nope", "mobile": "tcp"})"));
