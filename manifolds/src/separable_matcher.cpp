@@ -439,7 +439,8 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
 }
 
 // A point-line distance and a point-plane constraint on the same point, at least one of them a
-// range, with the plane's normal along the line for every rotation: a bounded cylinder.
+// range, with the line crossing the plane for every rotation: a bounded cylinder — a circle, an
+// annulus, a finite (thick) cylinder, cut square or obliquely (Somani 004 Table VII, last row).
 bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
                           const RotationAlternatives& rots, TranslationPart& out) {
   const auto& ts = set.translational;
@@ -451,7 +452,7 @@ bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
       (cyl.p - pl.p).norm() > tol.length || cyl.point_side != pl.point_side)
     return false;
   if (!holdsForEveryRotation(cyl, pl, rots, tol, [&](const Vector3d& d, const Vector3d& n) {
-        return d.cross(n).norm() <= tol.angle;
+        return std::abs(d.dot(n)) > tol.angle;
       }))
     return false;
   out.kind = TranslationKind::kBoundedCylinder;

@@ -277,15 +277,16 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
     return T;
   }
   if (kind == TranslationKind::kBoundedCylinder) {
-    // Axis point at the plane's height, then out along the azimuth at the radius.
     const TShape cyl = shapeOf(c1, R), pl = shapeOf(c2, R);
     const double r = c1.exact() ? c1.value() : t[1];
     const double v = c2.exact() ? 0.0 : t[c1.exact() ? 1 : 2];
     const double sign = c2.point_side == Side::kMobile ? 1.0 : -1.0;
     const double h = pl.d.dot(pl.c) + sign * v;  // the plane n·T = h
-    const Vector3d axis_point = cyl.c + ((h - pl.d.dot(cyl.c)) / pl.d.dot(cyl.d)) * cyl.d;
-    const Vector3d e2 = cyl.d.cross(cyl.e1);
-    return axis_point + r * (std::cos(t[0]) * cyl.e1 + std::sin(t[0]) * e2);
+    // Out from the axis along the azimuth, then along the axis onto the plane (an oblique plane
+    // cuts the thick cylinder obliquely: Somani's oblique cylinder).
+    const Vector3d u = std::cos(t[0]) * cyl.e1 + std::sin(t[0]) * cyl.d.cross(cyl.e1);
+    const double s = (h - pl.d.dot(cyl.c) - r * pl.d.dot(u)) / pl.d.dot(cyl.d);
+    return cyl.c + s * cyl.d + r * u;
   }
   const TShape s = shapeOf(c1, R);
   const Vector3d e2 = s.d.cross(s.e1);

@@ -28,9 +28,9 @@ enum class TranslationKind : unsigned char {
   // infinite or finite parallelepiped (Somani 004 Fig. 3 and Table VI). DOF = free directions +
   // ranged planes.
   kPlanes,
-  // A point-line distance (exact or ranged) with a point-plane constraint (exact or ranged) whose
-  // normal runs along the line: a circle, an annulus, a finite cylinder or a finite thick
-  // cylinder (Somani's grasp volumes). DOF = 1 (azimuth) + ranged constraints.
+  // A point-line distance (exact or ranged) with a point-plane constraint (exact or ranged) on a
+  // plane the line crosses: an annulus, a finite cylinder or a finite thick cylinder, square or
+  // oblique (Somani's grasp volumes, oblique cylinder). DOF = 1 (azimuth) + ranged constraints.
   kBoundedCylinder,
 };
 const char* toString(TranslationKind k);
