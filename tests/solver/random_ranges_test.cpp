@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "evaluator.hpp"
+#include "local_dof.hpp"
 #include "random_problems.hpp"
 #include "solve_helpers.hpp"
 
@@ -43,7 +44,7 @@ bool rangeable(const SingleKind& k) {
 TEST(RandomRanges, PairsWithRanges) {
   Rng rng(606);
   const auto& kinds = singleKinds();
-  int solved = 0, total = 0;
+  int solved = 0, total = 0, dof_checked = 0;
   for (std::size_t i = 0; i < kinds.size(); ++i)
     for (std::size_t j = i; j < kinds.size(); ++j) {
       if (!rangeable(kinds[i])) continue;
@@ -65,9 +66,17 @@ TEST(RandomRanges, PairsWithRanges) {
             << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
         std::string where;
         EXPECT_LT(worstSampledViolation(kp.problem, s, 16, 700 + total, &where), 1e-8) << where;
+        if (!grid) {
+          // The branch through the known pose has the local dimension there (ranges inactive
+          // inside their bounds), measured independently.
+          EXPECT_EQ(dofOfBranchesContaining(s, kp.X_WM_star), localDof(kp.problem, kp.X_WM_star))
+              << describeBranches(s);
+          ++dof_checked;
+        }
       }
     }
-  std::printf("[range pairs] solved %d of %d (%.1f%%)\n", solved, total, 100.0 * solved / total);
+  std::printf("[range pairs] solved %d of %d (%.1f%%), DOF checked %d\n", solved, total,
+              100.0 * solved / total, dof_checked);
 }
 
 void runRanges(bool grid, std::uint64_t seed) {

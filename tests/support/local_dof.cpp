@@ -107,10 +107,49 @@ void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3
 
 }  // namespace
 
+namespace {
+
+// A range constraint, at a pose strictly inside its range, removes no DOF: only its other
+// (equality) parts count — a parallelism, a perpendicularity. Those are the rows that do not
+// change with the value; `mask` marks them (evaluated once, at X).
+std::vector<bool> equalityRows(const InputConstraint& c, const Isometry3d& X_WF,
+                               const Isometry3d& X_WM) {
+  InputConstraint a = c, b = c;
+  a.has_value = b.has_value = true;
+  a.value = a.min = a.max = 1.0;
+  b.value = b.min = b.max = 2.0;
+  std::vector<double> ra, rb;
+  residuals(a, X_WF, X_WM, ra);
+  residuals(b, X_WF, X_WM, rb);
+  std::vector<bool> mask(ra.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) mask[i] = std::abs(ra[i] - rb[i]) < 1e-12;
+  return mask;
+}
+
+bool properRange(const InputConstraint& c) { return c.isRange() && c.min != c.max; }
+
+}  // namespace
+
 int localDof(const Problem& p, const Isometry3d& X) {
+  std::vector<std::vector<bool>> masks(p.constraints.size());
+  for (std::size_t k = 0; k < p.constraints.size(); ++k)
+    if (properRange(p.constraints[k])) masks[k] = equalityRows(p.constraints[k], p.fixed.pose, X);
   auto eval = [&](const Isometry3d& Y) {
     std::vector<double> r;
-    for (const auto& c : p.constraints) residuals(c, p.fixed.pose, Y, r);
+    for (std::size_t k = 0; k < p.constraints.size(); ++k) {
+      const InputConstraint& c = p.constraints[k];
+      if (!properRange(c)) {
+        residuals(c, p.fixed.pose, Y, r);
+        continue;
+      }
+      InputConstraint a = c;
+      a.has_value = true;
+      a.value = a.min = a.max = 1.0;
+      std::vector<double> ra;
+      residuals(a, p.fixed.pose, Y, ra);
+      for (std::size_t i = 0; i < ra.size(); ++i)
+        if (masks[k][i]) r.push_back(ra[i]);
+    }
     return r;
   };
   const std::size_t m = eval(X).size();
