@@ -9,8 +9,9 @@
 namespace relpos::manifolds {
 namespace {
 
-bool parallelUnit(const Vector3d& a, const Vector3d& b, const Tolerance& tol) {
-  return a.cross(b).norm() <= tol.angle;
+// Unit vectors along one line (either way), within the angle tolerance.
+bool alongSameLine(const Vector3d& a, const Vector3d& b, const Tolerance& tol) {
+  return tol.parallelUnit(a.cross(b).norm());
 }
 
 // The radial grasp (Somani 004 §VI-C, D): the approach line meets the axis (skew distance 0) at a
@@ -31,17 +32,17 @@ bool radialGrasp(const ConstraintSet& set, const Tolerance& tol, RadialGraspSpec
   if (!ll || !pl || set.rotational.size() != 1) return false;
   const Fundamental& a = set.rotational[0];
   if (!ll->exact() || !tol.zeroLength(ll->lo) || !a.exact() ||
-      !tol.equalAngle(a.value(), kPi / 2) || !parallelUnit(a.p, ll->u, tol) ||
-      !parallelUnit(a.q, ll->d, tol))
+      !tol.equalAngle(a.value(), kPi / 2) || !alongSameLine(a.p, ll->u, tol) ||
+      !alongSameLine(a.q, ll->d, tol))
     return false;
   // The fingertip's distance is measured from the same axis, and the tip is on the approach line.
   const Vector3d w = pl->q - ll->q;
-  if (pl->point_side != Side::kMobile || !parallelUnit(pl->d, ll->d, tol) ||
+  if (pl->point_side != Side::kMobile || !alongSameLine(pl->d, ll->d, tol) ||
       (w - w.dot(ll->d) * ll->d).norm() > tol.length ||
       (pl->p - ll->p).cross(ll->u).norm() > tol.length)
     return false;
   if (pp && (pp->point_side != Side::kMobile || (pp->p - pl->p).norm() > tol.length ||
-             !parallelUnit(pp->d, ll->d, tol)))
+             !alongSameLine(pp->d, ll->d, tol)))
     return false;
   spec->axis_point = ll->q;
   spec->axis_dir = ll->d;

@@ -324,35 +324,22 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
     out.kind = TranslationKind::kFree;
     return true;
   }
-  if (ts.size() == 1 && !ts[0].exact()) {
-    out.c1 = ts[0];
-    switch (ts[0].kind) {
-      case FundamentalKind::kPointPoint:
-        out.kind = TranslationKind::kShell;
-        return true;
-      case FundamentalKind::kPointLine:
-        out.kind = TranslationKind::kThickCylinder;
-        return true;
-      case FundamentalKind::kPointPlane:
-        out.kind = TranslationKind::kSlab;
-        return true;
-      case FundamentalKind::kAngle:
-      case FundamentalKind::kLineLine:
-        return false;
-    }
-  }
   if (ts.size() == 1) {
+    // One shape (PMF Table V), or with a range its thick version (Somani Table VI).
     const Fundamental& f = ts[0];
+    const bool ranged = !f.exact(), zero = f.value() == 0.0;
     out.c1 = f;
     switch (f.kind) {
       case FundamentalKind::kPointPoint:
-        out.kind = f.value() == 0.0 ? TranslationKind::kPoint : TranslationKind::kSphere;
+        out.kind = ranged ? TranslationKind::kShell
+                          : (zero ? TranslationKind::kPoint : TranslationKind::kSphere);
         return true;
       case FundamentalKind::kPointLine:
-        out.kind = f.value() == 0.0 ? TranslationKind::kLine : TranslationKind::kCylinder;
+        out.kind = ranged ? TranslationKind::kThickCylinder
+                          : (zero ? TranslationKind::kLine : TranslationKind::kCylinder);
         return true;
       case FundamentalKind::kPointPlane:
-        out.kind = TranslationKind::kPlane;
+        out.kind = ranged ? TranslationKind::kSlab : TranslationKind::kPlane;
         return true;
       case FundamentalKind::kAngle:
       case FundamentalKind::kLineLine:

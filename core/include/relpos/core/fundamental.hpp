@@ -28,7 +28,6 @@ inline constexpr int kFundamentalKinds = 5;
 const char* toString(FundamentalKind k);
 
 enum class Side : unsigned char { kFixed, kMobile };
-inline Side other(Side s) { return s == Side::kFixed ? Side::kMobile : Side::kFixed; }
 
 struct Fundamental {
   FundamentalKind kind = FundamentalKind::kPointPoint;
