@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace relpos {
@@ -218,6 +219,14 @@ bool deferSet(void* state, const ConstraintSet& derived) {
   return true;
 }
 
+// Branches matched from a `revolve` set describe X' of X = Rot(line, φ) X': unless the matcher
+// wrapped them in the turn, they would be wrong poses.
+bool allRevolved(const Solution& solution, std::size_t first) {
+  for (std::size_t b = first; b < solution.branches.size(); ++b)
+    if (std::strcmp(solution.branches[b].manifold->typeName(), "Revolved") != 0) return false;
+  return true;
+}
+
 void listBits(SourceMask m, std::vector<int>& out) {
   for (int k = 0; k < 64; ++k)
     if (m >> k & 1) out.push_back(k);
@@ -265,6 +274,10 @@ void runPending(SolveState& st) {
       break;
     }
     if (r == MatchResult::kDeferred) continue;  // its derived sets come later in `pending`
+    if (r == MatchResult::kMatched && set.revolve && !allRevolved(solution, before)) {
+      setUnhandled(st, "a matcher does not support sets turned about a fixed line");
+      break;
+    }
     if (r == MatchResult::kMatched) {
       any_solved_set = true;
       redundant &= set.dropped_redundant & ~set.usedSources();

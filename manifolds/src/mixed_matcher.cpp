@@ -1,6 +1,7 @@
 // The mixed-manifold matcher (Somani 004 §IV-A): sets whose constraints cannot be split into a
 // rotational and a translational part. Today: one line-line distance (skew, or a cylinder-line
-// tangency) on its own.
+// tangency) on its own, and the radial grasp. (Revolved branches come from the separable
+// matcher, which derives their inner fixed-rotation sets.)
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
 #include "relpos/manifolds/line_distance.hpp"
@@ -61,6 +62,7 @@ bool radialGrasp(const ConstraintSet& set, const Tolerance& tol, RadialGraspSpec
 }
 
 MatchResult matchMixed(MatchContext& ctx) {
+  if (ctx.set.revolve) return MatchResult::kNoMatch;  // only separable branches can be revolved
   const auto& ts = ctx.set.translational;
   if (ctx.set.rotational.empty() && ts.size() == 1 && ts[0].kind == FundamentalKind::kLineLine) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
@@ -92,6 +94,11 @@ void registerMixedManifolds(Registry& registry) {
       {"mixed/RadialGrasp",
        "2-4 DOF: an approach line meeting a fixed axis at a right angle, the "
        "fingertip on it at a distance (range) and height (range) (Somani 004 §VI)"});
+  registry.addManifold(
+      {"mixed/Revolved",
+       "1 DOF more than a fixed-rotation branch: that branch turned about a fixed line, when "
+       "the rotation spins about it and every position constraint is symmetric about it "
+       "(Somani 004 Fig. 2c, 2g)"});
   registry.addMatcher({"mixed", &matchMixed});
 }
 

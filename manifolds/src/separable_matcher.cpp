@@ -5,22 +5,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "derived_sets.hpp"
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
+#include "relpos/manifolds/revolved.hpp"
 #include "relpos/manifolds/separable.hpp"
 
 namespace relpos::manifolds {
 namespace {
 
-constexpr int kMaxRotations = 8;
-
-struct RotationAlternatives {
-  RotationPart parts[kMaxRotations];
-  int count = 0;
-  void add(const RotationPart& r) {
-    if (count < kMaxRotations) parts[count++] = r;
-  }
-};
+using detail::kMaxRotations;
+using detail::RotationAlternatives;
 
 // An angle constraint with its value snapped to a parallelism when it is 0 or π.
 struct Angle {
@@ -448,54 +443,6 @@ bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
   return true;
 }
 
-// With the rotation known, every translational constraint confines T to a fixed shape: re-anchor
-// them all to the mobile frame's origin (T = R·0 + T), where the one-point rules of PMF App. IV
-// apply whatever points, roles and frames the constraints had (PMF §V: T is solved for the
-// current R). One derived set per rotation; the rotation rides along as two parallelisms.
-Fundamental reanchored(const Fundamental& f, const Matrix3d& R) {
-  const Vector3d origin = Vector3d::Zero();
-  Fundamental g = f;
-  if (f.point_side == Side::kMobile) {
-    g.q = f.q - R * f.p;  // fixed element shifted by the mobile point's offset
-  } else {
-    g.q = f.p - R * f.q;  // T on the shape p − R X: point p_f, element moved by R
-    g.d = R * f.d;
-    if (f.kind == FundamentalKind::kPointPlane) {
-      // (p − R q − T)·Rn = v  <=>  (T − (p − R q))·Rn = −v: a signed range flips.
-      g.lo = -f.hi;
-      g.hi = -f.lo;
-    }
-  }
-  g.point_side = Side::kMobile;
-  g.p = origin;
-  return g;
-}
-
-bool anchored(const ConstraintSet& set) {
-  for (const auto& f : set.translational)
-    if (f.point_side != Side::kMobile || !f.p.isZero(0.0)) return false;
-  return true;
-}
-
-MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
-  if (!ctx.defer || anchored(ctx.set)) return MatchResult::kNoMatch;
-  for (int k = 0; k < rots.count; ++k)
-    if (rots.parts[k].kind != RotationKind::kFixed) return MatchResult::kNoMatch;
-  SourceMask rot_sources = 0;
-  for (const auto& f : ctx.set.rotational) rot_sources |= f.sources;
-  ConstraintSet derived;
-  for (int k = 0; k < rots.count; ++k) {
-    const Matrix3d& R = rots.parts[k].R0;
-    derived.clear();
-    derived.dropped_redundant = ctx.set.dropped_redundant;
-    derived.add(Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources));
-    derived.add(Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources));
-    for (const auto& f : ctx.set.translational) derived.add(reanchored(f, R));
-    if (!ctx.defer(ctx.solver, derived)) return MatchResult::kOverflow;
-  }
-  return MatchResult::kDeferred;
-}
-
 // A set with a range (min/max) is matched only where the range stands alone in its list: no
 // PMF rule combines ranges, so a range with other constraints of its kind is left unhandled.
 bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
@@ -504,22 +451,35 @@ bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
   return true;
 }
 
+bool hasLineLine(const ConstraintSet& set) {
+  for (const auto& f : set.translational)
+    if (f.kind == FundamentalKind::kLineLine) return true;
+  return false;
+}
+
 MatchResult matchSeparable(MatchContext& ctx) {
   if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
-  for (const auto& f : ctx.set.translational)
-    if (f.kind == FundamentalKind::kLineLine) return MatchResult::kNoMatch;  // mixed: not separable
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
-  if (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
-      !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
-      !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))
-    return reanchorForEachRotation(ctx, rots);
+  // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
+  if (hasLineLine(ctx.set) || (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
+                               !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
+                               !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))) {
+    r = detail::reanchorForEachRotation(ctx, rots);
+    return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);
+  }
   for (int k = 0; k < rots.count; ++k) {
+    if (ctx.set.revolve && rots.parts[k].kind != RotationKind::kFixed) return MatchResult::kNoMatch;
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
     ctx.out.branches.emplace_back();
-    ctx.out.branches.back().manifold.emplace<SeparableManifold>(rots.parts[k], trans);
+    ManifoldHolder& m = ctx.out.branches.back().manifold;
+    if (ctx.set.revolve)
+      m.emplace<RevolvedManifold>(ctx.set.revolve_point, ctx.set.revolve_axis,
+                                  SeparableManifold(rots.parts[k], trans));
+    else
+      m.emplace<SeparableManifold>(rots.parts[k], trans);
   }
   return MatchResult::kMatched;
 }

@@ -15,6 +15,7 @@ void registerBuiltinRules(Registry& r) {
   registerMixedRoleRules(r);
   registerAngleRules(r);
   registerRangeRules(r);
+  registerRangeCutRules(r);
 }
 }  // namespace relpos::rules
 

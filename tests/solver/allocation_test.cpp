@@ -2,6 +2,8 @@
 // path"). Counts every global operator new while solving.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -66,14 +68,25 @@ TEST(Allocation, RepeatedSolvesOfUpToEightConstraintsAllocateNothing) {
   EXPECT_GT(checked, 50);
 }
 
-TEST(Allocation, WorkedExampleAllocatesNothingAfterWarmUp) {
-  ParseResult r =
-      parseSpecFile(RELPOS_DATA_DIR "/examples/pmf-simple-example.json", builtinRegistry());
-  ASSERT_TRUE(r.problem);
-  Workspace ws;
-  Solution s;
-  allocationsDuring(*r.problem, ws, s);
-  for (int i = 0; i < 100; ++i) EXPECT_EQ(allocationsDuring(*r.problem, ws, s), 0);
+// Every bundled task (the worked example, ranges, mixed and revolved branches, the scenarios):
+// after one warm-up solve into the same Workspace and Solution, solving again allocates nothing.
+TEST(Allocation, BundledProblemsAllocateNothingAfterWarmUp) {
+  int checked = 0;
+  for (const char* dir : {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/scenarios"}) {
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      if (e.path().extension() != ".json") continue;
+      ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
+      ASSERT_TRUE(r.problem) << e.path();
+      Workspace ws;
+      Solution s;
+      allocationsDuring(*r.problem, ws, s);
+      if (s.status == Status::kUnhandled) continue;
+      SCOPED_TRACE(e.path().string());
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(allocationsDuring(*r.problem, ws, s), 0);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 60);
 }
 
 }  // namespace

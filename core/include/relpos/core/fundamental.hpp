@@ -71,6 +71,11 @@ struct ConstraintSet {
   SourceMask dropped_redundant = 0;  // sources of constraints dropped
   std::uint16_t next_id = 1;
   bool overflow = false;  // a push_back was refused
+  // Set on the sets a matcher derives for a one-parallelism rotation whose constraints are all
+  // invariant under turning about one fixed line (Somani 004 Fig. 2c): the set then describes
+  // X' of X = Rot(line, phi) X', and every branch matched from it must be a revolved manifold.
+  bool revolve = false;
+  Vector3d revolve_point = Vector3d::Zero(), revolve_axis = Vector3d::UnitZ();
   void clear() {
     translational.clear();
     rotational.clear();
@@ -78,6 +83,7 @@ struct ConstraintSet {
     dropped_redundant = 0;
     next_id = 1;
     overflow = false;
+    revolve = false;
   }
   void add(Fundamental f) {
     f.id = next_id++;

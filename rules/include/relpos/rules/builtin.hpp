@@ -15,6 +15,7 @@ void registerPointPlaneRules(Registry& registry);       // App. IV Table VII
 void registerMixedRoleRules(Registry& registry);        // App. IV Tables VIII and IX
 void registerAngleRules(Registry& registry);            // App. IV Table X
 void registerRangeRules(Registry& registry);            // Somani 004 Table VII (ranges)
+void registerRangeCutRules(Registry& registry);  // Somani 004 Table VII (range with exact)
 // Everything above.
 void registerBuiltinRules(Registry& registry);
 }  // namespace relpos::rules

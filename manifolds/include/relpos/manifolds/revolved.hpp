@@ -1,0 +1,36 @@
+#pragma once
+// A mixed manifold (Somani 004 Fig. 2c): every pose of a fixed-rotation branch X'(θ), turned
+// about one fixed line ℓ (point c, unit direction a):
+//   X(φ, θ) = Rot(ℓ, φ) · X'(θ)
+// Built when the rotation spins about a and every translational constraint is invariant under
+// turning about ℓ (its fixed elements on ℓ, along ℓ, or perpendicular to a): the translation then
+// follows the rotation and the two cannot be separated.
+#include <string>
+
+#include "relpos/core/manifold.hpp"
+#include "relpos/manifolds/separable.hpp"
+
+namespace relpos::manifolds {
+
+class RevolvedManifold final : public ManifoldBase<RevolvedManifold> {
+ public:
+  // `inner` must have a fixed rotation (RotationKind::kFixed).
+  RevolvedManifold(const Vector3d& point, const Vector3d& axis, const SeparableManifold& inner)
+      : c_(point), a_(axis), inner_(inner) {}
+  static constexpr const char* kTypeName = "Revolved";
+  const char* typeName() const override { return kTypeName; }
+  int dof() const override { return 1 + inner_.dof(); }
+  int rotationalDof() const override { return -1; }
+  int translationalDof() const override { return -1; }
+  Parameter parameter(int i) const override;
+  Isometry3d pose(const Params& theta) const override;
+  Params project(const Isometry3d& X) const override;
+  std::string describe() const override;
+
+ private:
+  Isometry3d turn(double phi) const;  // Rot(ℓ, φ)
+  Vector3d c_, a_;
+  SeparableManifold inner_;
+};
+
+}  // namespace relpos::manifolds
