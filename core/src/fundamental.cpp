@@ -14,6 +14,8 @@ const char* toString(FundamentalKind k) {
       return "angle";
     case FundamentalKind::kLineLine:
       return "line-line";
+    case FundamentalKind::kCustom:
+      return "custom";
   }
   return "?";
 }

@@ -76,9 +76,11 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     Params t = proj;
     for (int k = 0, code = c; k < n_angles; ++k, code /= kGrid) {
       const Parameter& p = par[angles[k]];
-      const double lo = p.periodic ? -kPi : p.min, hi = p.periodic ? kPi : p.max;
-      t[angles[k]] = p.periodic ? t[angles[k]] + (hi - lo) * (code % kGrid) / kGrid
-                                : lo + (hi - lo) * (code % kGrid) / (kGrid - 1);
+      // Periodic or unbounded (a screw's turn): quarter turns from the projection; bounded:
+      // evenly over the bounds.
+      const bool wraps = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
+      t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % kGrid) / kGrid
+                           : p.min + (p.max - p.min) * (code % kGrid) / (kGrid - 1);
     }
     const double d = poseDistance(m.pose(t), X);
     if (d < grid_d) grid_d = d, grid_best = t;

@@ -16,7 +16,9 @@ void Registry::checkOpen() const {
 
 namespace {
 template <typename T>
-void addNamed(std::vector<T>& items, T item, bool replace, const char* what) {
+void addNamed(std::vector<T>& items, T item, bool replace, const char* what,
+              const std::string& origin) {
+  if (!origin.empty()) item.origin = origin;
   auto it =
       std::find_if(items.begin(), items.end(), [&](const T& x) { return x.name == item.name; });
   if (it == items.end()) {
@@ -32,13 +34,13 @@ void addNamed(std::vector<T>& items, T item, bool replace, const char* what) {
 
 void Registry::addConstraintType(ConstraintType t, bool replace) {
   checkOpen();
-  addNamed(types_, std::move(t), replace, "constraint type");
+  addNamed(types_, std::move(t), replace || allow_replace_, "constraint type", origin_);
 }
 
 void Registry::addRule(RuleInfo r, bool replace) {
   checkOpen();
   if (!r.fn) throw std::invalid_argument("rule '" + r.name + "' has no function");
-  addNamed(rules_, std::move(r), replace, "rule");
+  addNamed(rules_, std::move(r), replace || allow_replace_, "rule", origin_);
   // Rebuild the dispatch table: cheap, happens only at set-up, keeps registration order.
   for (auto& row : table_)
     for (auto& cell : row) cell.clear();
@@ -51,13 +53,56 @@ void Registry::addRule(RuleInfo r, bool replace) {
 
 void Registry::addManifold(ManifoldInfo m, bool replace) {
   checkOpen();
-  addNamed(manifolds_, std::move(m), replace, "manifold");
+  addNamed(manifolds_, std::move(m), replace || allow_replace_, "manifold", origin_);
 }
 
 void Registry::addMatcher(MatcherInfo m, bool replace) {
   checkOpen();
   if (!m.fn) throw std::invalid_argument("matcher '" + m.name + "' has no function");
-  addNamed(matchers_, std::move(m), replace, "matcher");
+  addNamed(matchers_, std::move(m), replace || allow_replace_, "matcher", origin_);
+}
+
+std::uint16_t Registry::addCustomKind(CustomKindInfo k) {
+  checkOpen();
+  if (!k.residual) throw std::invalid_argument("custom kind '" + k.name + "' has no residual");
+  if (!origin_.empty()) k.origin = origin_;
+  for (std::size_t i = 0; i < custom_kinds_.size(); ++i) {
+    if (custom_kinds_[i].name != k.name) continue;
+    if (custom_kinds_[i].origin != k.origin && !allow_replace_)
+      throw std::invalid_argument("custom kind '" + k.name + "' is already registered (by " +
+                                  custom_kinds_[i].origin + ")");
+    custom_kinds_[i] = std::move(k);
+    return static_cast<std::uint16_t>(i);
+  }
+  custom_kinds_.push_back(std::move(k));
+  return static_cast<std::uint16_t>(custom_kinds_.size() - 1);
+}
+
+const CustomKindInfo* Registry::customKind(const std::string& name) const {
+  for (const auto& k : custom_kinds_)
+    if (k.name == name) return &k;
+  return nullptr;
+}
+
+void Registry::setOrigin(std::string origin, bool allow_replace) {
+  origin_ = std::move(origin);
+  allow_replace_ = allow_replace;
+}
+
+void Registry::clearOrigin() {
+  origin_.clear();
+  allow_replace_ = false;
+}
+
+namespace {
+struct LibraryNode {
+  std::shared_ptr<const void> library, previous;
+};
+}  // namespace
+
+void Registry::keepLoaded(const std::string& path, std::shared_ptr<const void> library) {
+  plugin_paths_.push_back(path);
+  libraries_ = std::make_shared<const LibraryNode>(LibraryNode{std::move(library), libraries_});
 }
 
 const ConstraintType* Registry::constraintType(const std::string& name) const {

@@ -312,6 +312,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
            Workspace& ws, Solution& solution) {
   const auto t0 = std::chrono::steady_clock::now();
   prepare(options, ws, solution);
+  solution.libraries = registry.loadedLibraries();
   const Tolerance tol =
       Tolerance::forScale(problem.lengthScale(), options.length_tolerance, options.angle_tolerance);
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
@@ -331,6 +332,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
 void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Registry& registry,
                         const SolverOptions& options, Workspace& ws, Solution& solution) {
   prepare(options, ws, solution);
+  solution.libraries = registry.loadedLibraries();
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
   ws.pending.clear();
   ws.pending.push_back(set);

@@ -63,6 +63,8 @@ bool radialGrasp(const ConstraintSet& set, const Tolerance& tol, RadialGraspSpec
 
 MatchResult matchMixed(MatchContext& ctx) {
   if (ctx.set.revolve) return MatchResult::kNoMatch;  // only separable branches can be revolved
+  for (const auto& f : ctx.set.translational)
+    if (f.kind == FundamentalKind::kCustom) return MatchResult::kNoMatch;  // a plugin's kind
   const auto& ts = ctx.set.translational;
   if (ctx.set.rotational.empty() && ts.size() == 1 && ts[0].kind == FundamentalKind::kLineLine) {
     if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;

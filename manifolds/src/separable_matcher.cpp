@@ -338,6 +338,7 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
         return true;
       case FundamentalKind::kAngle:
       case FundamentalKind::kLineLine:
+      case FundamentalKind::kCustom:
         return false;
     }
   }
@@ -451,20 +452,22 @@ bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
   return true;
 }
 
-bool hasLineLine(const ConstraintSet& set) {
+bool hasKind(const ConstraintSet& set, FundamentalKind kind) {
   for (const auto& f : set.translational)
-    if (f.kind == FundamentalKind::kLineLine) return true;
+    if (f.kind == kind) return true;
   return false;
 }
 
 MatchResult matchSeparable(MatchContext& ctx) {
+  // A plugin's kind is for the plugin's matchers only: never solve a set while ignoring one.
+  if (hasKind(ctx.set, FundamentalKind::kCustom)) return MatchResult::kNoMatch;
   if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
   // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
-  if (hasLineLine(ctx.set) || (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
+  if (hasKind(ctx.set, FundamentalKind::kLineLine) || (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
                                !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
                                !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))) {
     r = detail::reanchorForEachRotation(ctx, rots);

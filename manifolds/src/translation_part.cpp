@@ -62,6 +62,7 @@ TShape shapeOf(const Fundamental& f, const Matrix3d& R) {
       break;
     case FundamentalKind::kAngle:
     case FundamentalKind::kLineLine:
+    case FundamentalKind::kCustom:
       break;
   }
   return s;
@@ -198,6 +199,7 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
         break;
       case FundamentalKind::kAngle:
       case FundamentalKind::kLineLine:
+      case FundamentalKind::kCustom:
         break;
     }
   }

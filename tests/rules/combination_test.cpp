@@ -9,14 +9,15 @@
 #include <map>
 #include <set>
 
-#include "fundamental_eval.hpp"
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
+#include "relpos/plugins/conformance.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
 namespace {
+using plugins::fundamentalResidual;
 
 // Every rule case the registry knows (a rule without cases counts as one).
 std::vector<std::string> allCaseNames() {
@@ -47,35 +48,11 @@ std::vector<Fundamental> satisfiedFundamentals(const KnownProblem& kp) {
   return out;
 }
 
-// Branches of a constraint set on its own (combined again and synthesised), for sampling a rule's
-// output.
-bool synthesise(const std::vector<Fundamental>& fs, const Tolerance& tol, Solution& out) {
-  ConstraintSet set;
-  set.clear();
-  for (const Fundamental& f : fs) set.add(f);
-  Workspace ws;
-  solveConstraintSet(set, tol, builtinRegistry(), SolverOptions(), ws, out);
-  return out.status == Status::kSolved;
-}
-
-// Every sampled pose of the synthesised output satisfies both inputs; returns false when the
-// output alone cannot be synthesised (then nothing is checked).
+// The conformance kit's check, against the built-in registry.
 bool outputImpliesInputs(const std::vector<Fundamental>& output, const Fundamental& a,
                          const Fundamental& b, const Tolerance& tol, std::mt19937_64& rng,
                          std::string* bad) {
-  Solution s;
-  if (!synthesise(output, tol, s)) return false;
-  for (const Branch& br : s.branches)
-    for (int k = 0; k < 8; ++k) {
-      Isometry3d X = br.manifold->pose(sampleParams(*br.manifold, rng));
-      const double ra = fundamentalResidual(a, X), rb = fundamentalResidual(b, X);
-      if (ra > 1e-6 || rb > 1e-6) {
-        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " + std::to_string(ra) +
-               ", " + std::to_string(rb);
-        return true;
-      }
-    }
-  return true;
+  return plugins::outputImpliesInputs(builtinRegistry(), output, a, b, tol, rng, bad);
 }
 
 TEST(RuleProperties, RulesKeepTheKnownSolution) {

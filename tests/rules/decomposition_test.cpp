@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "evaluator.hpp"
-#include "fundamental_eval.hpp"
+#include "relpos/plugins/conformance.hpp"
 #include "random_problems.hpp"
 #include "solve_helpers.hpp"
 
@@ -14,7 +14,7 @@ namespace {
 bool satisfiesSomeAlternative(const Decomposition& d, const Isometry3d& X, double tol) {
   for (const auto& alt : d.alternatives) {
     bool all = true;
-    for (const Fundamental& f : alt) all = all && fundamentalResidual(f, X) <= tol;
+    for (const Fundamental& f : alt) all = all && plugins::fundamentalResidual(f, X) <= tol;
     if (all) return true;
   }
   return false;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "evaluator.hpp"
+#include "relpos/plugins/conformance.hpp"
 #include "relpos/rules/builtin.hpp"
 
 namespace relpos::test {
@@ -21,14 +22,7 @@ const Registry& builtinRegistry() {
 }
 
 Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
-  Params t{};
-  for (int i = 0; i < m.dof(); ++i) {
-    const Parameter p = m.parameter(i);
-    const double lo = std::isfinite(p.min) ? p.min : -window;
-    const double hi = std::isfinite(p.max) ? p.max : window;
-    t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
-  }
-  return t;
+  return plugins::sampleParams(m, rng, window);
 }
 
 std::string poseText(const Isometry3d& X) {

@@ -23,8 +23,12 @@ enum class FundamentalKind : unsigned char {
   // (q, d) in [lo, hi]. Neither purely rotational nor translational; kept in C_T, never combined
   // by the PMF rules, solved by the mixed-manifold matcher.
   kLineLine = 4,
+  // A kind a plugin registers (Registry::addCustomKind): `custom` names which. The built-in rules
+  // and matchers never touch it; only the plugin's own rules and matchers do, so a set holding
+  // one that no plugin matcher recognises is answered `unhandled`, never solved without it.
+  kCustom = 5,
 };
-inline constexpr int kFundamentalKinds = 5;
+inline constexpr int kFundamentalKinds = 6;
 const char* toString(FundamentalKind k);
 
 enum class Side : unsigned char { kFixed, kMobile };
@@ -42,6 +46,7 @@ struct Fundamental {
   double lo = 0.0, hi = 0.0;
   SourceMask sources = 0;
   std::uint16_t id = 0;  // identity within a constraint set (assigned by ConstraintSet::add)
+  std::uint16_t custom = 0;  // kCustom: the index Registry::addCustomKind returned
 
   bool exact() const { return lo == hi; }
   double value() const { return lo; }

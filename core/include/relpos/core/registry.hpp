@@ -3,6 +3,7 @@
 // built-ins through explicit register functions, plugins through the same calls. After set-up
 // the registry is frozen and read concurrently by any number of solves.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,17 @@ struct MatcherInfo {
   std::string origin = "built-in";
 };
 
+// --- custom fundamental kinds (plugins) --------------------------------------------------------
+// How far pose X_WM is from satisfying f (0 inside), in the units of f's value: what the
+// conformance kits sample with.
+using ResidualFn = double (*)(const Fundamental& f, const Isometry3d& X_WM);
+struct CustomKindInfo {
+  std::string name;
+  std::string description;
+  ResidualFn residual = nullptr;
+  std::string origin = "built-in";
+};
+
 class Registry {
  public:
   // Each add throws std::invalid_argument on a duplicate name (unless replace is true) or once
@@ -111,7 +123,20 @@ class Registry {
   void addRule(RuleInfo r, bool replace = false);
   void addManifold(ManifoldInfo m, bool replace = false);
   void addMatcher(MatcherInfo m, bool replace = false);
+  // Registers a fundamental kind of its own for a plugin; returns the index to store in
+  // Fundamental::custom (the same index when the name is already registered by this origin).
+  std::uint16_t addCustomKind(CustomKindInfo k);
   void freeze() { frozen_ = true; }
+
+  // While an origin is set (the plugin loader sets the plugin's path), every item added is
+  // stamped with it, and `allow_replace` lets it replace an item of the same name.
+  void setOrigin(std::string origin, bool allow_replace);
+  void clearOrigin();
+  // Keeps a loaded plugin library alive as long as this registry and every Solution solved with
+  // it (their manifolds' code may live in the library).
+  void keepLoaded(const std::string& path, std::shared_ptr<const void> library);
+  const std::shared_ptr<const void>& loadedLibraries() const { return libraries_; }
+  const std::vector<std::string>& pluginPaths() const { return plugin_paths_; }
   bool frozen() const { return frozen_; }
 
   const ConstraintType* constraintType(const std::string& name) const;
@@ -119,6 +144,8 @@ class Registry {
   const std::vector<RuleInfo>& rules() const { return rules_; }
   const std::vector<ManifoldInfo>& manifolds() const { return manifolds_; }
   const std::vector<MatcherInfo>& matchers() const { return matchers_; }
+  const std::vector<CustomKindInfo>& customKinds() const { return custom_kinds_; }
+  const CustomKindInfo* customKind(const std::string& name) const;
 
   // Rules for an ordered pair of kinds: indices into rules(), with `swapped` telling whether the
   // rule wants the pair in the opposite order. Built once per registration, never scanned.
@@ -137,6 +164,12 @@ class Registry {
   std::vector<RuleInfo> rules_;
   std::vector<ManifoldInfo> manifolds_;
   std::vector<MatcherInfo> matchers_;
+  std::vector<CustomKindInfo> custom_kinds_;
+  std::string origin_;  // empty: built-in
+  bool allow_replace_ = false;
+  // One node per loaded library, each holding the previous: copying the head keeps them all.
+  std::shared_ptr<const void> libraries_;
+  std::vector<std::string> plugin_paths_;
   std::array<std::array<std::vector<Entry>, kFundamentalKinds>, kFundamentalKinds> table_;
 };
 

@@ -2,6 +2,7 @@
 // The answer of a solve (SPEC.md §2). Defaults describe a solve that never ran. A Solution can
 // be reused across solves: clear() keeps every buffer's capacity, so repeated solves into the
 // same Solution allocate nothing.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct Branch {
 
 struct Solution {
   Solution();
+  // The plugin libraries of the registry that solved it: branches may run their code. Declared
+  // first so it is destroyed last, after the branches.
+  std::shared_ptr<const void> libraries;
   Status status = Status::kNotSolved;
   std::string message = "relpos::solve was not called.";
   std::vector<Branch> branches;

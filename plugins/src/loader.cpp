@@ -1,0 +1,113 @@
+#include "relpos/plugins/loader.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <filesystem>
+#include <memory>
+
+#include "relpos/core/plugin_api.hpp"
+
+#ifndef BOOST_DLL_USE_STD_FS
+#define BOOST_DLL_USE_STD_FS
+#endif
+#include <boost/dll/shared_library.hpp>
+
+namespace relpos::plugins {
+namespace fs = std::filesystem;
+namespace dll = boost::dll;
+
+namespace {
+
+std::string canonical(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? path : p.string();
+}
+
+bool fail(const std::string& path, const std::string& why, std::string* error) {
+  *error = path + ": " + why;
+  return false;
+}
+
+std::string abiText(long abi) {
+  return std::to_string(abi / 1000000) + "." + std::to_string(abi % 1000000);
+}
+
+}  // namespace
+
+bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
+                const LoadOptions& options) {
+  const std::string id = canonical(path);
+  const auto& loaded = registry.pluginPaths();
+  if (std::find(loaded.begin(), loaded.end(), id) != loaded.end()) return true;
+  if (registry.frozen()) return fail(path, "the registry is frozen: load plugins before solving", error);
+  std::error_code exists_ec;
+  if (!fs::is_regular_file(id, exists_ec)) return fail(path, "no such plugin file", error);
+
+  auto lib = std::make_shared<dll::shared_library>();
+  dll::fs::error_code ec;
+  lib->load(id, dll::load_mode::rtld_lazy | dll::load_mode::rtld_local, ec);
+  if (ec || !lib->is_loaded())
+    return fail(path, "not a shared library that can be loaded (" + ec.message() + ")", error);
+  if (!lib->has("relpos_plugin_abi") || !lib->has("relpos_register_plugin"))
+    return fail(path,
+                "not a relpos plugin: it does not export relpos_plugin_abi and "
+                "relpos_register_plugin (end a source file with RELPOS_PLUGIN(...))",
+                error);
+  const long abi = lib->get_alias<PluginAbiFn>("relpos_plugin_abi")();
+  if (abi != pluginAbi())
+    return fail(path,
+                "built for relpos plugin ABI " + abiText(abi) + ", this relpos has " +
+                    abiText(pluginAbi()) + " (rebuild the plugin against this relpos)",
+                error);
+
+  // Registration is all or nothing: on failure the registry goes back to this copy.
+  Registry before = registry;
+  const char* failure = nullptr;
+  std::string thrown;
+  registry.setOrigin(id, options.allow_override);
+  try {
+    failure = lib->get_alias<PluginRegisterFn>("relpos_register_plugin")(registry);
+  } catch (const std::exception& e) {  // the entry point catches; this is belt and braces
+    thrown = e.what();
+  } catch (...) {
+    thrown = "unknown exception";
+  }
+  registry.clearOrigin();
+  if (failure || !thrown.empty()) {
+    const std::string why = failure ? std::string(failure) : thrown;
+    registry = std::move(before);
+    const bool clash = why.find("already registered") != std::string::npos;
+    return fail(path,
+                "registration failed: " + why +
+                    (clash ? " (pass --allow-override to let the plugin replace it)" : ""),
+                error);
+  }
+  registry.keepLoaded(id, std::shared_ptr<const void>(lib, lib.get()));
+  return true;
+}
+
+std::vector<std::string> expandPluginPath(const std::string& value) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= value.size()) {
+    std::size_t end = value.find(':', start);
+    if (end == std::string::npos) end = value.size();
+    const std::string entry = value.substr(start, end - start);
+    start = end + 1;
+    if (entry.empty()) continue;
+    std::error_code ec;
+    if (fs::is_directory(entry, ec)) {
+      std::vector<std::string> files;
+      for (const auto& e : fs::directory_iterator(entry, ec))
+        if (e.path().extension() == ".so") files.push_back(e.path().string());
+      std::sort(files.begin(), files.end());
+      out.insert(out.end(), files.begin(), files.end());
+    } else {
+      out.push_back(entry);
+    }
+  }
+  return out;
+}
+
+}  // namespace relpos::plugins
