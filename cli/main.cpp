@@ -16,6 +16,7 @@
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
+#include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"
 
 namespace fs = std::filesystem;
@@ -29,7 +30,8 @@ const char* kUsage =
     "usage:\n"
     "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
     "  relpos rules [--coverage DIR-or-SPEC...]\n"
-    "  relpos table DIR-or-SPEC... [--repeat N]\n";
+    "  relpos table DIR-or-SPEC... [--repeat N]\n"
+    "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -41,6 +43,8 @@ struct Args {
   relpos::ResultOptions result;
   std::string out;
   int repeat = 200;
+  std::vector<std::string> plugins;
+  bool allow_override = false;
 };
 
 long parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
@@ -76,6 +80,10 @@ Args parseArgs(int argc, char** argv, int first) {
       a.out = value();
     else if (s == "--coverage")
       a.coverage = true;
+    else if (s == "--plugin")
+      a.plugins.push_back(value());
+    else if (s == "--allow-override")
+      a.allow_override = true;
     else if (s.size() > 1 && s[0] == '-')
       throw UsageError("unknown option '" + s + "'");
     else
@@ -184,7 +192,44 @@ int cmdRules(const Args& a, const Registry& reg) {
     std::cout << "  " << m.name << "  [" << m.origin << "]  " << m.description << "\n";
   std::cout << "matchers:\n";
   for (const auto& m : reg.matchers()) std::cout << "  " << m.name << "  [" << m.origin << "]\n";
+  if (!reg.customKinds().empty()) {
+    std::cout << "custom fundamental kinds:\n";
+    for (const auto& k : reg.customKinds())
+      std::cout << "  " << k.name << "  [" << k.origin << "]  " << k.description << "\n";
+  }
   return kExitOk;
+}
+
+// Loads, in order, the plugins of RELPOS_PLUGIN_PATH, of --plugin, and of the "plugins" lists of
+// the specs the command will read. The first failure is one line on stderr; false then.
+bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
+  struct Item {
+    std::string path, where;  // where: what named it, for the message
+  };
+  std::vector<Item> items;
+  if (const char* env = std::getenv("RELPOS_PLUGIN_PATH"))
+    for (const auto& p : relpos::plugins::expandPluginPath(env))
+      items.push_back({p, "RELPOS_PLUGIN_PATH: "});
+  for (const auto& p : a.plugins) items.push_back({p, ""});
+  std::vector<std::string> specs;
+  if (cmd == "solve" && a.positional.size() == 1) specs = a.positional;
+  if ((cmd == "table" || (cmd == "rules" && a.coverage)) && !a.positional.empty())
+    specs = specFiles(a.positional);
+  for (const auto& spec : specs) {
+    const auto paths = relpos::specPluginPaths(spec);
+    for (std::size_t i = 0; i < paths.size(); ++i)
+      items.push_back({paths[i], spec + ": plugins[" + std::to_string(i) + "]: "});
+  }
+  relpos::plugins::LoadOptions options;
+  options.allow_override = a.allow_override;
+  for (const auto& item : items) {
+    std::string error;
+    if (!relpos::plugins::loadPlugin(item.path, reg, &error, options)) {
+      std::cerr << "relpos: " << item.where << error << "\n";
+      return false;
+    }
+  }
+  return true;
 }
 
 std::vector<std::string> specFiles(const std::vector<std::string>& inputs) {
@@ -254,6 +299,7 @@ int main(int argc, char** argv) {
     Args a = parseArgs(argc, argv, 2);
     Registry reg;
     relpos::registerBuiltins(reg);
+    if (!loadPlugins(cmd, a, reg)) return kExitInvalid;
     reg.freeze();
     if (cmd == "solve") return cmdSolve(a, reg);
     if (cmd == "rules") return cmdRules(a, reg);

@@ -327,10 +327,8 @@ class Parser {
       c->type = j["type"].get<std::string>();
       type = reg_.constraintType(c->type);
       if (!type) {
-        std::string known;
-        for (const auto& t : reg_.constraintTypes()) known += (known.empty() ? "" : ", ") + t.name;
-        error(join(path, "type"), "unknown constraint type '" + c->type +
-                                      "' (load the plugin that provides it; known: " + known + ")");
+        error(join(path, "type"),
+              "unknown constraint type '" + c->type + "' (load the plugin that provides it)");
         ok = false;
       }
     }
@@ -468,11 +466,13 @@ class Parser {
           pb.obstacles.push_back(o);
         }
     }
-    if (j.contains("plugins")) {
+    if (j.contains("plugins")) {  // loaded by the caller before parsing (specPluginPaths)
       if (!j["plugins"].is_array())
         error("plugins", "expected an array of plugin paths");
-      else if (!j["plugins"].empty())
-        warn("plugins", "plugin loading is not available in this version (ignored)");
+      else
+        for (std::size_t i = 0; i < j["plugins"].size(); ++i)
+          if (!j["plugins"][i].is_string())
+            error("plugins[" + std::to_string(i) + "]", "expected a path (string)");
     }
     if (j.contains("constraints")) {
       const json& cs = j["constraints"];
@@ -550,6 +550,23 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
   auto dot = base.rfind('.');
   if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
   return parseSpec(ss.str(), registry, base);
+}
+
+std::vector<std::string> specPluginPaths(const std::string& file) {
+  std::vector<std::string> out;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return out;
+  const json j = json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("plugins") || !j["plugins"].is_array())
+    return out;
+  const std::string::size_type slash = file.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "" : file.substr(0, slash + 1);
+  for (const auto& p : j["plugins"])
+    if (p.is_string()) {
+      const std::string path = p.get<std::string>();
+      out.push_back(!path.empty() && path[0] == '/' ? path : dir + path);
+    }
+  return out;
 }
 
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d) {

@@ -79,9 +79,12 @@ Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
 }
 
 void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int samples) {
-  auto fail = [&](const std::string& what) { report.failures.push_back(m.describe() + ": " + what); };
+  auto fail = [&](const std::string& what) {
+    report.failures.push_back(m.describe() + ": " + what);
+  };
   std::mt19937_64 rng(seed);
-  if (m.dof() < 0 || m.dof() > kMaxDof) return fail("dof " + std::to_string(m.dof()) + " out of range");
+  if (m.dof() < 0 || m.dof() > kMaxDof)
+    return fail("dof " + std::to_string(m.dof()) + " out of range");
   if (m.rotationalDof() >= 0 && m.rotationalDof() + m.translationalDof() != m.dof())
     fail("rotational + translational DOF differ from dof");
   for (int i = 0; i < m.dof(); ++i) {
@@ -133,8 +136,8 @@ bool outputImpliesInputs(const Registry& registry, const std::vector<Fundamental
       const double ra = fundamentalResidual(a, X, &registry);
       const double rb = fundamentalResidual(b, X, &registry);
       if (ra > 1e-6 || rb > 1e-6) {
-        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " +
-               std::to_string(ra) + ", " + std::to_string(rb);
+        *bad = br.manifold->describe() + " at " + poseText(X) + " residuals " + std::to_string(ra) +
+               ", " + std::to_string(rb);
         return true;
       }
     }

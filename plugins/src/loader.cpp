@@ -1,5 +1,7 @@
 #include "relpos/plugins/loader.hpp"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <exception>
 #include <filesystem>
@@ -29,6 +31,17 @@ bool fail(const std::string& path, const std::string& why, std::string* error) {
   return false;
 }
 
+// Boost.DLL reports a generic error code; dlerror() says what the dynamic loader found wrong
+// (not ELF, wrong architecture, a missing dependency, an undefined symbol).
+std::string whyNotLoadable(const std::string& path, const dll::fs::error_code& ec) {
+  if (void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
+    dlclose(h);
+    return ec.message();
+  }
+  const char* why = dlerror();
+  return why ? why : ec.message();
+}
+
 std::string abiText(long abi) {
   return std::to_string(abi / 1000000) + "." + std::to_string(abi % 1000000);
 }
@@ -40,7 +53,8 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
   const std::string id = canonical(path);
   const auto& loaded = registry.pluginPaths();
   if (std::find(loaded.begin(), loaded.end(), id) != loaded.end()) return true;
-  if (registry.frozen()) return fail(path, "the registry is frozen: load plugins before solving", error);
+  if (registry.frozen())
+    return fail(path, "the registry is frozen: load plugins before solving", error);
   std::error_code exists_ec;
   if (!fs::is_regular_file(id, exists_ec)) return fail(path, "no such plugin file", error);
 
@@ -48,7 +62,8 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
   dll::fs::error_code ec;
   lib->load(id, dll::load_mode::rtld_lazy | dll::load_mode::rtld_local, ec);
   if (ec || !lib->is_loaded())
-    return fail(path, "not a shared library that can be loaded (" + ec.message() + ")", error);
+    return fail(path, "not a shared library that can be loaded (" + whyNotLoadable(id, ec) + ")",
+                error);
   if (!lib->has("relpos_plugin_abi") || !lib->has("relpos_register_plugin"))
     return fail(path,
                 "not a relpos plugin: it does not export relpos_plugin_abi and "

@@ -197,3 +197,91 @@ TEST(Cli, RuleCoverageOverTheBundledProblems) {
 }
 
 }  // namespace
+
+namespace {
+
+const std::string kPluginDir = RELPOS_PLUGIN_DIR;
+
+TEST(CliPlugins, ASpecNeedingAPluginFailsWithoutIt) {
+  CmdResult r = run("solve " RELPOS_DATA_DIR "/plugins/symmetric-centred-grasp.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("symmetric-centred-grasp.json: constraints[0].type: unknown constraint "
+                       "type 'symmetric' (load the plugin that provides it)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
+TEST(CliPlugins, PluginFlagLoadsItAndRulesShowItsOrigin) {
+  CmdResult r = run("solve " RELPOS_DATA_DIR "/plugins/symmetric-centred-grasp.json --plugin " +
+                    kPluginDir + "/relpos-symmetric.so");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "solved");
+  EXPECT_EQ(j["rules"], nlohmann::json({"shell-cut:pp+pplane/annulus"}));
+  CmdResult rules = run("rules --plugin " + kPluginDir + "/relpos-helical.so");
+  ASSERT_EQ(rules.code, 0) << rules.err;
+  const std::string origin = "[" + fs::canonical(kPluginDir + "/relpos-helical.so").string() + "]";
+  for (const char* item : {"  thread  ", "  Helical  ", "  helical  "})
+    EXPECT_NE(rules.out.find(item + origin), std::string::npos) << item << "\n" << rules.out;
+  EXPECT_NE(rules.out.find("  distance  [built-in]"), std::string::npos);
+}
+
+TEST(CliPlugins, EnvironmentPathLoadsAFolder) {
+  fs::path d = scratchDir();
+  std::string cmd = "RELPOS_PLUGIN_PATH=/nonexistent-dir-is-skipped-not:" + kPluginDir + " " +
+                    RELPOS_EXE + " table " RELPOS_DATA_DIR "/plugins >" + (d / "out").string() +
+                    " 2>" + (d / "err").string();
+  int status = std::system(cmd.c_str());
+  // The missing entry is reported as a missing plugin file: exit 2, one line.
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(slurp(d / "err").find("RELPOS_PLUGIN_PATH: /nonexistent-dir-is-skipped-not: no such "
+                                  "plugin file"),
+            std::string::npos)
+      << slurp(d / "err");
+  cmd = "RELPOS_PLUGIN_PATH=" + kPluginDir + " " + RELPOS_EXE +
+        " table " RELPOS_DATA_DIR "/plugins >" + (d / "out").string() + " 2>" +
+        (d / "err").string();
+  status = std::system(cmd.c_str());
+  ASSERT_EQ(WEXITSTATUS(status), 0) << slurp(d / "err");
+  EXPECT_NE(slurp(d / "out").find("2 specs, 0 invalid"), std::string::npos) << slurp(d / "out");
+}
+
+TEST(CliPlugins, SpecPluginListIsRelativeToTheSpec) {
+  fs::path d = scratchDir();
+  fs::copy_file(kPluginDir + "/relpos-helical.so", d / "relpos-helical.so",
+                fs::copy_options::overwrite_existing);
+  std::string spec = slurp(RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json");
+  spec.insert(spec.find("\"fixed\""), "\"plugins\": [\"relpos-helical.so\"],\n  ");
+  fs::path file = writeSpec("with-plugin.json", spec);
+  CmdResult r = run("solve " + file.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["branches"][0]["dof"], 1);
+}
+
+TEST(CliPlugins, EveryBadPluginIsOneLineAndExitTwo) {
+  const fs::path text = writeSpec("not-a-library.so", "plain text\n");
+  for (const std::string& bad :
+       {text.string(), std::string(RELPOS_BAD_PLUGIN_DIR "/bad-no-entry.so"),
+        std::string(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so"),
+        std::string(RELPOS_BAD_PLUGIN_DIR "/bad-throws.so"),
+        std::string(RELPOS_BAD_PLUGIN_DIR "/bad-duplicate.so")}) {
+    for (const std::string& cmd :
+         {std::string("rules"), "solve " + kExample, "table " + kExample}) {
+      CmdResult r = run(cmd + " --plugin " + bad);
+      EXPECT_EQ(r.code, 2) << cmd << " " << bad;
+      EXPECT_EQ(r.err.rfind("relpos: " + bad + ": ", 0), 0u) << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+  }
+  CmdResult ok = run("rules --allow-override --plugin " RELPOS_BAD_PLUGIN_DIR "/bad-duplicate.so");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("distance  [" +
+                        fs::canonical(RELPOS_BAD_PLUGIN_DIR "/bad-duplicate.so").string() +
+                        "]  a plugin's replacement"),
+            std::string::npos)
+      << ok.out;
+}
+
+}  // namespace

@@ -2,6 +2,8 @@
 // gives an error naming the JSON path and the problem.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "relpos/core/spec_io.hpp"
 #include "solve_helpers.hpp"
 
@@ -192,13 +194,27 @@ TEST(SpecParse, UnknownFieldsAreWarnings) {
   EXPECT_EQ(r.warnings[0].path, "constraints[0].colour");
 }
 
-TEST(SpecParse, PluginListIsAcceptedWithAWarning) {
+TEST(SpecParse, PluginListIsAPathListResolvedAgainstTheSpec) {
   std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
-  s.insert(s.find("\"fixed\""), R"("plugins": ["libsymmetric.so"], )");
+  s.insert(s.find("\"fixed\""), R"("plugins": ["libsymmetric.so", "/opt/x.so", 3], )");
   ParseResult r = parse(s);
-  ASSERT_TRUE(r.problem);
-  ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_EQ(r.warnings[0].path, "plugins");
+  EXPECT_FALSE(r.problem);
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].path, "plugins[2]");
+  EXPECT_EQ(r.errors[0].message, "expected a path (string)");
+  const std::string file = ::testing::TempDir() + "plugin_list_spec.json";
+  std::ofstream(file) << s;
+  const auto paths = specPluginPaths(file);
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(paths[0], ::testing::TempDir() + "libsymmetric.so");
+  EXPECT_EQ(paths[1], "/opt/x.so");
+}
+
+TEST(SpecParse, UnknownTypeNamesTheMissingPlugin) {
+  ParseResult r = parse(spec(R"({"type": "symmetric", "fixed": "K", "mobile": "tcp"})"));
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].message,
+            "unknown constraint type 'symmetric' (load the plugin that provides it)");
 }
 
 TEST(SpecParse, EveryProblemIsReportedAtOnce) {

@@ -2,13 +2,14 @@
 // branch of every example and of random single-constraint problems — passes the same property
 // checks: poses are rigid, pose(project(pose(θ))) == pose(θ), contains() holds on the manifold,
 // parameters are well formed and respected, nearest is never worse than the projection.
+#include "relpos/plugins/conformance.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
-#include "relpos/plugins/conformance.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "evaluator.hpp"
-#include "relpos/plugins/conformance.hpp"
 #include "random_problems.hpp"
+#include "relpos/plugins/conformance.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {

@@ -57,6 +57,18 @@ double off(double x, const InputConstraint& c) {
   return 0.0;
 }
 
+// The mobile line runs along the fixed axis, same direction; with R0 the shortest rotation
+// taking the mobile direction (mobile frame) onto the axis, R = Rot(d, θ) R0 and the line's point
+// sits at q + (pitch θ / 2π) d for some real θ: the advance is pitch·φ/2π up to whole pitches.
+double threadViolation(const InputConstraint& c, const W& F, const W& M, const Isometry3d& X_WM) {
+  const Matrix3d R0 = Quaterniond::FromTwoVectors(c.mobile.direction, F.d).toRotationMatrix();
+  const Eigen::AngleAxisd turn(X_WM.linear() * R0.transpose());
+  const double phi = turn.angle() * (turn.axis().dot(F.d) >= 0 ? 1.0 : -1.0);
+  const double advance = (M.a - F.a).dot(F.d) - c.value * phi / (2 * 3.14159265358979323846);
+  const double phase = std::abs(advance - c.value * std::round(advance / c.value));
+  return std::max({angleOf(M.d, F.d), pointLine(M.a, F), phase});
+}
+
 }  // namespace
 
 double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM) {
@@ -131,6 +143,11 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
       return std::abs(skewDistance(C, L) - C.r);
     }
   }
+  // The example plugins' types, from their documentation (docs/spec-additions.md).
+  if (t == "symmetric")
+    return std::max(parallelViolation(M.d, F.d, Orientation::kEither),
+                    std::abs(pointPlane(M.a, F)));
+  if (t == "thread") return threadViolation(c, F, M, X_WM);
   return 1e9;  // unknown to this evaluator: never "satisfied"
 }
 

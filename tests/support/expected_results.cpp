@@ -21,8 +21,8 @@ std::string firedList(const Solution& s) {
   return all;
 }
 
-void checkOne(const Problem& p, const nlohmann::json& x) {
-  Solution s = solve(p, builtinRegistry());
+void checkOne(const Problem& p, const nlohmann::json& x, const Registry& registry) {
+  Solution s = solve(p, registry);
   if (x.contains("fires")) {
     const std::string want = x["fires"];
     EXPECT_TRUE(
@@ -48,7 +48,8 @@ void checkOne(const Problem& p, const nlohmann::json& x) {
 
 }  // namespace
 
-int checkFolderAgainstExpectations(const std::string& folder, const std::string& expected_file) {
+int checkFolderAgainstExpectations(const std::string& folder, const std::string& expected_file,
+                                   const Registry& registry) {
   std::ifstream in(std::string(RELPOS_DATA_DIR) + "/expected/" + expected_file);
   EXPECT_TRUE(in) << "missing data/expected/" << expected_file;
   if (!in) return 0;
@@ -58,16 +59,20 @@ int checkFolderAgainstExpectations(const std::string& folder, const std::string&
        std::filesystem::directory_iterator(std::string(RELPOS_DATA_DIR) + "/" + folder)) {
     if (e.path().extension() != ".json") continue;
     SCOPED_TRACE(e.path().string());
-    ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
+    ParseResult r = parseSpecFile(e.path().string(), registry);
     EXPECT_TRUE(r.problem) << (r.errors.empty() ? "" : r.errors.front().message);
     if (!r.problem) continue;
     EXPECT_TRUE(expected.contains(r.problem->name)) << "no expectation for " << r.problem->name;
     if (!expected.contains(r.problem->name)) continue;
-    checkOne(*r.problem, expected[r.problem->name]);
+    checkOne(*r.problem, expected[r.problem->name], registry);
     ++checked;
   }
   EXPECT_EQ(checked, static_cast<int>(expected.size())) << "every expectation has its spec";
   return checked;
+}
+
+int checkFolderAgainstExpectations(const std::string& folder, const std::string& expected_file) {
+  return checkFolderAgainstExpectations(folder, expected_file, builtinRegistry());
 }
 
 }  // namespace relpos::test

@@ -24,8 +24,7 @@ void checkThread(const InputConstraint& c, std::vector<std::string>& problems) {
   if (!c.has_value) problems.push_back("value: a thread needs its pitch as \"value\", not a range");
 }
 
-void decomposeThread(const InputConstraint& c, const Feature& F, SourceMask s,
-                     Decomposition& out) {
+void decomposeThread(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out) {
   auto& alt = out.addAlternative();
   alt.push_back(Fundamental::angle(c.mobile.direction, F.direction, 0.0, s));
   Fundamental h;
@@ -78,7 +77,8 @@ MatchResult matchHelical(MatchContext& ctx) {
 
 void registerAll(Registry& registry) {
   g_helical_kind = registry.addCustomKind(
-      {"helical", "a screw motion: along a fixed axis, advancing pitch per turn", &helicalResidual});
+      {"helical", "a screw motion: along a fixed axis, advancing pitch per turn",
+       &helicalResidual});
   ConstraintType t;
   t.name = "thread";
   t.description =

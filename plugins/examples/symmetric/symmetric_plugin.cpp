@@ -34,8 +34,7 @@ enum Case { kDisjoint, kDisc, kAnnulus };
 void shellCutByPlane(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                      RuleOutput& out) {
   // a: point-point range (point mobile); b: exact point-plane on the same mobile point.
-  if (a.exact() || !b.exact() || b.point_side != Side::kMobile ||
-      (a.p - b.p).norm() > tol.length)
+  if (a.exact() || !b.exact() || b.point_side != Side::kMobile || (a.p - b.p).norm() > tol.length)
     return;
   const double h = (a.q - b.q).dot(b.d);  // the centre's signed distance from the plane
   if (std::abs(h) > a.hi + tol.length) {

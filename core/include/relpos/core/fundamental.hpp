@@ -45,7 +45,7 @@ struct Fundamental {
   Vector3d u = Vector3d::UnitZ();  // kLineLine: the mobile line's direction
   double lo = 0.0, hi = 0.0;
   SourceMask sources = 0;
-  std::uint16_t id = 0;  // identity within a constraint set (assigned by ConstraintSet::add)
+  std::uint16_t id = 0;      // identity within a constraint set (assigned by ConstraintSet::add)
   std::uint16_t custom = 0;  // kCustom: the index Registry::addCustomKind returned
 
   bool exact() const { return lo == hi; }

@@ -30,8 +30,8 @@ inline constexpr long kPluginAbiVersion = 1;
 constexpr long pluginAbi() {
   return kPluginAbiVersion * 1000000L +
          static_cast<long>((sizeof(Fundamental) * 131 + sizeof(ConstraintSet) * 31 +
-                            sizeof(RuleOutput) * 7 + sizeof(Decomposition) * 3 +
-                            kManifoldStorage + sizeof(MatchContext)) %
+                            sizeof(RuleOutput) * 7 + sizeof(Decomposition) * 3 + kManifoldStorage +
+                            sizeof(MatchContext)) %
                            1000000);
 }
 
@@ -41,21 +41,21 @@ using PluginRegisterFn = const char*(Registry&);
 
 }  // namespace relpos
 
-#define RELPOS_PLUGIN(register_function)                                          \
-  namespace relpos_plugin_entry {                                                 \
-  inline long abi() { return ::relpos::pluginAbi(); }                             \
-  inline const char* registerAll(::relpos::Registry& registry) noexcept {         \
-    static std::string error;                                                     \
-    try {                                                                         \
-      register_function(registry);                                                \
-      return nullptr;                                                             \
-    } catch (const std::exception& e) {                                           \
-      error = e.what();                                                           \
-    } catch (...) {                                                               \
-      error = "an exception that is not a std::exception";                        \
-    }                                                                             \
-    return error.c_str();                                                         \
-  }                                                                               \
-  }                                                                               \
-  BOOST_DLL_ALIAS(relpos_plugin_entry::abi, relpos_plugin_abi)                    \
+#define RELPOS_PLUGIN(register_function)                                  \
+  namespace relpos_plugin_entry {                                         \
+  inline long abi() { return ::relpos::pluginAbi(); }                     \
+  inline const char* registerAll(::relpos::Registry& registry) noexcept { \
+    static std::string error;                                             \
+    try {                                                                 \
+      register_function(registry);                                        \
+      return nullptr;                                                     \
+    } catch (const std::exception& e) {                                   \
+      error = e.what();                                                   \
+    } catch (...) {                                                       \
+      error = "an exception that is not a std::exception";                \
+    }                                                                     \
+    return error.c_str();                                                 \
+  }                                                                       \
+  }                                                                       \
+  BOOST_DLL_ALIAS(relpos_plugin_entry::abi, relpos_plugin_abi)            \
   BOOST_DLL_ALIAS(relpos_plugin_entry::registerAll, relpos_register_plugin)

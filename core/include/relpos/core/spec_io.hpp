@@ -29,6 +29,10 @@ ParseResult parseSpec(const std::string& text, const Registry& registry,
                       const std::string& default_name = "spec");
 ParseResult parseSpecFile(const std::string& file, const Registry& registry);
 
+// The spec's "plugins" list, each path resolved against the spec's folder: what to load before
+// parsing it. Empty when there is none or the file cannot be read (parseSpecFile reports that).
+std::vector<std::string> specPluginPaths(const std::string& file);
+
 // "file: path: message" (path omitted when empty).
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
 

@@ -1,0 +1,272 @@
+// Plugins through the loader, as a user loads them: the example plugins solve their bundled specs
+// and random known-pose problems, pass the same conformance kits as the built-ins, outlive their
+// registry inside solutions; bad plugins are refused with one clear line and the registry left
+// untouched.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "evaluator.hpp"
+#include "expected_results.hpp"
+#include "random_problems.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "relpos/plugins/conformance.hpp"
+#include "relpos/plugins/loader.hpp"
+#include "relpos/rules/builtin.hpp"
+#include "solve_helpers.hpp"
+#include "test_config.hpp"
+
+namespace relpos::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kSymmetric = RELPOS_PLUGIN_DIR "/relpos-symmetric.so";
+const std::string kHelical = RELPOS_PLUGIN_DIR "/relpos-helical.so";
+
+// Built-ins plus the given plugins; fails the test on a load error.
+Registry withPlugins(std::initializer_list<std::string> paths, bool freeze = true) {
+  Registry r;
+  registerBuiltins(r);
+  for (const auto& p : paths) {
+    std::string error;
+    EXPECT_TRUE(plugins::loadPlugin(p, r, &error)) << error;
+  }
+  if (freeze) r.freeze();
+  return r;
+}
+
+const Registry& exampleRegistry() {
+  static const Registry r = withPlugins({kSymmetric, kHelical});
+  return r;
+}
+
+TEST(Plugins, ExamplePluginsSolveTheirBundledSpecs) {
+  EXPECT_EQ(checkFolderAgainstExpectations("plugins", "plugins.json", exampleRegistry()), 2);
+}
+
+TEST(Plugins, ItemsCarryThePluginPathAsOrigin) {
+  const Registry& r = exampleRegistry();
+  ASSERT_NE(r.constraintType("symmetric"), nullptr);
+  EXPECT_EQ(r.constraintType("symmetric")->origin, fs::canonical(kSymmetric).string());
+  EXPECT_EQ(r.constraintType("distance")->origin, "built-in");
+  ASSERT_NE(r.customKind("helical"), nullptr);
+  EXPECT_EQ(r.customKind("helical")->origin, fs::canonical(kHelical).string());
+  EXPECT_EQ(r.pluginPaths().size(), 2u);
+}
+
+TEST(Plugins, LoadingTheSamePathTwiceIsOneLoad) {
+  Registry r = withPlugins({kSymmetric}, false);
+  std::string error;
+  EXPECT_TRUE(plugins::loadPlugin(RELPOS_PLUGIN_DIR "/../plugins/relpos-symmetric.so", r, &error))
+      << error;
+  EXPECT_EQ(r.pluginPaths().size(), 1u);
+}
+
+// A thread around a known pose: random axis, pitch and turn; the known pose lies on the helix.
+TEST(Plugins, RandomThreadsContainTheKnownPose) {
+  Rng rng(77);
+  for (int k = 0; k < 100; ++k) {
+    Problem p;
+    const Vector3d a = rng.point(), d = rng.unit(), u_m = rng.unit(), p_m = rng.point(0.5);
+    const double pitch = rng.uniform(-0.01, 0.01) + (k % 2 ? 0.002 : -0.002);
+    const double theta = rng.uniform(-40, 40);
+    Isometry3d X = Isometry3d::Identity();
+    X.linear() = axisAngle(d, theta) * Quaterniond::FromTwoVectors(u_m, d).toRotationMatrix();
+    X.translation() = a + pitch * theta / (2 * kPi) * d - X.linear() * p_m;
+    p.addFixedFeature("hole", Feature::makeCylinder(a, d, 0.004))
+        .addMobileFeature("shank", Feature::makeLine(p_m, u_m));
+    p.addConstraint("thread", "hole", "shank", pitch);
+    p.constraints[0].has_value = true;
+    p.mobile.pose = rng.pose();
+    SCOPED_TRACE("thread #" + std::to_string(k));
+    ASSERT_LT(worstViolation(p, X), 1e-9);
+    Solution s = solve(p, exampleRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    ASSERT_EQ(s.branches.size(), 1u);
+    EXPECT_EQ(s.branches[0].manifold->dof(), 1);
+    EXPECT_TRUE(someBranchContains(s, X)) << poseText(X);
+    std::string where;
+    EXPECT_LT(worstSampledViolation(p, s, 20, 500 + k, &where), 1e-8) << where;
+    plugins::Report report;
+    plugins::checkManifold(*s.branches[0].manifold, 900 + k, report);
+    EXPECT_TRUE(report.ok()) << report.text();
+  }
+}
+
+// A fingertip centre mirrored about a random mid-plane and kept within a distance range of a
+// random point: the plugin's rule turns the shell and the plane into an annulus or a disc.
+TEST(Plugins, RandomCentredGraspsContainTheKnownPose) {
+  Rng rng(78);
+  int annulus = 0, disc = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Isometry3d X = rng.pose();
+    const Vector3d c_m = rng.point(0.5), u_m = rng.unit();
+    const Vector3d c_W = X * c_m, n_W = X.linear() * u_m;
+    Problem p;
+    p.addFixedFeature("mid", Feature::makePlane(c_W + rng.perpendicular(n_W), n_W));
+    // The handle: off the plane by h, at distance r from the centre.
+    const double h = rng.uniform(-0.3, 0.3);
+    const Vector3d handle = c_W + h * n_W + rng.uniform(0.0, 0.4) * rng.perpendicular(n_W);
+    const double r = (handle - c_W).norm();
+    p.addFixedFeature("handle", Feature::makePoint(handle));
+    p.addMobileFeature("fingers", Feature::makeLine(c_m, u_m))
+        .addMobileFeature("centre", Feature::makePoint(c_m));
+    p.addConstraint("symmetric", "mid", "fingers");
+    p.addConstraint("distance", "handle", "centre");
+    p.constraints[1].has_value = false;
+    p.constraints[1].min = std::max(0.0, r - rng.uniform(0.01, 0.3));
+    p.constraints[1].max = r + rng.uniform(0.01, 0.3);
+    p.mobile.pose = rng.pose();
+    SCOPED_TRACE("grasp #" + std::to_string(k));
+    ASSERT_LT(worstViolation(p, X), 1e-9);
+    Solution s = solve(p, exampleRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    for (const char* rule : s.rules) {
+      annulus += std::string(rule) == "shell-cut:pp+pplane/annulus";
+      disc += std::string(rule) == "shell-cut:pp+pplane/disc";
+    }
+    EXPECT_TRUE(someBranchContains(s, X)) << describeBranches(s) << poseText(X);
+    std::string where;
+    EXPECT_LT(worstSampledViolation(p, s, 20, 700 + k, &where), 1e-8) << where;
+    EXPECT_EQ(dofOfBranchesContaining(s, X), 3) << describeBranches(s);
+  }
+  EXPECT_GT(annulus, 10);
+  EXPECT_GT(disc, 10);
+}
+
+// The installed rule kit on the plugin's rule: random shell/plane pairs around a known pose.
+TEST(Plugins, PluginRulePassesTheRuleConformanceKit) {
+  const Registry& reg = exampleRegistry();
+  const RuleInfo* rule = nullptr;
+  for (const auto& r : reg.rules())
+    if (r.name == "shell-cut:pp+pplane") rule = &r;
+  ASSERT_NE(rule, nullptr);
+  Rng rng(79);
+  std::mt19937_64 sampler(80);
+  plugins::Report report;
+  for (int k = 0; k < 200; ++k) {
+    const Isometry3d X = rng.pose();
+    const Vector3d p_m = rng.point(0.5), p_W = X * p_m, n = rng.unit();
+    const Vector3d centre = rng.point();
+    const double dist = (p_W - centre).norm();
+    Fundamental shell = Fundamental::pointPoint(p_m, centre, 0.0, 1);
+    shell.lo = std::max(0.0, dist - rng.uniform(0.01, 0.5));
+    shell.hi = dist + rng.uniform(0.01, 0.5);
+    const Fundamental plane = Fundamental::pointPlane(Side::kMobile, p_m, p_W, n, 0.0, 2);
+    const Tolerance tol = Tolerance::forScale(3.0);
+    plugins::checkRule(reg, *rule, shell, plane, tol, sampler, report, &X);
+  }
+  EXPECT_TRUE(report.ok()) << report.text();
+  EXPECT_GT(report.checked, 150);
+}
+
+TEST(Plugins, SolutionsKeepThePluginLoadedAfterTheRegistryIsGone) {
+  Solution s;
+  Isometry3d X_expected;
+  {
+    const Registry r = withPlugins({kHelical});
+    ParseResult pr = parseSpecFile(RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json", r);
+    ASSERT_TRUE(pr.problem);
+    s = solve(*pr.problem, r);
+    ASSERT_EQ(s.status, Status::kSolved);
+    Params t{};
+    t[0] = 2 * kPi;
+    X_expected = s.branches[0].manifold->pose(t);
+  }
+  // The registry (and its reference to the library) is gone; the branch's code is still there.
+  Params t{};
+  t[0] = 2 * kPi;
+  EXPECT_LT(poseDistance(s.branches[0].manifold->pose(t), X_expected), 1e-15);
+  Solution copy = s;
+  s = Solution();
+  EXPECT_EQ(copy.branches[0].manifold->describe(), "mixed Helical (pitch 0.001250 per turn)");
+}
+
+// --- bad plugins ------------------------------------------------------------------------------
+
+struct Counts {
+  std::size_t types, rules, manifolds, matchers, kinds, plugins;
+  bool operator==(const Counts& o) const {
+    return types == o.types && rules == o.rules && manifolds == o.manifolds &&
+           matchers == o.matchers && kinds == o.kinds && plugins == o.plugins;
+  }
+};
+Counts counts(const Registry& r) {
+  return {r.constraintTypes().size(), r.rules().size(),       r.manifolds().size(),
+          r.matchers().size(),        r.customKinds().size(), r.pluginPaths().size()};
+}
+
+// Loading fails with `expected` in its message and leaves the registry as it was.
+void expectRefused(const std::string& path, const std::string& expected) {
+  Registry r;
+  registerBuiltins(r);
+  const Counts before = counts(r);
+  std::string error;
+  EXPECT_FALSE(plugins::loadPlugin(path, r, &error));
+  EXPECT_NE(error.find(expected), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+  EXPECT_EQ(error.rfind(path, 0), 0u) << "names the plugin: " << error;
+  EXPECT_TRUE(counts(r) == before);
+  EXPECT_EQ(r.constraintType("half-registered"), nullptr);
+  EXPECT_EQ(r.constraintType("distance")->origin, "built-in");
+}
+
+TEST(BadPlugins, AFileThatIsNotALibrary) {
+  const std::string path = ::testing::TempDir() + "not-a-library.so";
+  std::ofstream(path) << "this is text, not ELF\n";
+  expectRefused(path, "not a shared library that can be loaded");
+}
+
+TEST(BadPlugins, AMissingFile) {
+  expectRefused(::testing::TempDir() + "no-such-plugin.so", "no such plugin file");
+}
+
+TEST(BadPlugins, ALibraryWithoutTheEntryPoint) {
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-no-entry.so", "not a relpos plugin");
+}
+
+TEST(BadPlugins, AWrongAbiVersion) {
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so", "built for relpos plugin ABI 2.");
+}
+
+TEST(BadPlugins, APluginThatThrowsWhileRegistering) {
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-throws.so",
+                "registration failed: the plugin's own set-up failed");
+}
+
+TEST(BadPlugins, ADuplicateNameUnlessOverrideIsAskedFor) {
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-duplicate.so",
+                "constraint type 'distance' is already registered (by built-in)");
+  Registry r;
+  registerBuiltins(r);
+  std::string error;
+  plugins::LoadOptions override;
+  override.allow_override = true;
+  ASSERT_TRUE(plugins::loadPlugin(RELPOS_BAD_PLUGIN_DIR "/bad-duplicate.so", r, &error, override))
+      << error;
+  EXPECT_EQ(r.constraintType("distance")->description, "a plugin's replacement");
+  EXPECT_NE(r.constraintType("distance")->origin, "built-in");
+}
+
+TEST(BadPlugins, AFrozenRegistryTakesNoPlugin) {
+  Registry r;
+  registerBuiltins(r);
+  r.freeze();
+  std::string error;
+  EXPECT_FALSE(plugins::loadPlugin(kSymmetric, r, &error));
+  EXPECT_NE(error.find("frozen"), std::string::npos) << error;
+}
+
+TEST(PluginPath, FoldersExpandToTheirLibrariesInNameOrder) {
+  const auto files = plugins::expandPluginPath(std::string(RELPOS_PLUGIN_DIR) + "::/nowhere.so");
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(fs::path(files[0]).filename(), "relpos-helical.so");
+  EXPECT_EQ(fs::path(files[1]).filename(), "relpos-symmetric.so");
+  EXPECT_EQ(files[2], "/nowhere.so");
+}
+
+}  // namespace
+}  // namespace relpos::test
