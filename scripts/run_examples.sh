@@ -4,4 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/build.sh
-"${BUILD_DIR:-build}/cli/relpos" table data/examples
+build="${BUILD_DIR:-build}"
+"$build/cli/relpos" table data/examples data/scenarios
+"$build/cli/relpos" table data/plugins --plugin "$build/plugins/relpos-symmetric.so" \
+  --plugin "$build/plugins/relpos-helical.so"
