@@ -1,6 +1,7 @@
 // The relpos command (SPEC.md §3): solve, rules, table.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -29,8 +31,9 @@ constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
 const char* kUsage =
     "usage:\n"
     "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
+    "               [--collision [--clearance C] [--collision-samples N]]\n"
     "  relpos rules [--coverage DIR-or-SPEC...]\n"
-    "  relpos table DIR-or-SPEC... [--repeat N]\n"
+    "  relpos table DIR-or-SPEC... [--repeat N] [--collision ...]\n"
     "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
 
 struct UsageError : std::runtime_error {
@@ -45,7 +48,18 @@ struct Args {
   int repeat = 200;
   std::vector<std::string> plugins;
   bool allow_override = false;
+  bool collision = false;
+  bool collision_option = false;  // --clearance or --collision-samples given
+  relpos::collision::FilterOptions filter;
 };
+
+double parseNonNegative(const std::string& flag, const std::string& v) {
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end || !(x >= 0) || !std::isfinite(x))
+    throw UsageError(flag + ": expected a non-negative number, got '" + v + "'");
+  return x;
+}
 
 long parseInt(const std::string& flag, const std::string& v, long lo, long hi) {
   char* end = nullptr;
@@ -70,13 +84,16 @@ Args parseArgs(int argc, char** argv, int first) {
       a.result.seed = static_cast<std::uint64_t>(parseInt(s, value(), 0, LONG_MAX));
     else if (s == "--repeat")
       a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
-    else if (s == "--window") {
-      std::string v = value();
-      char* end = nullptr;
-      a.result.window = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end || !(a.result.window >= 0) || !std::isfinite(a.result.window))
-        throw UsageError("--window: expected a non-negative number, got '" + v + "'");
-    } else if (s == "-o")
+    else if (s == "--window")
+      a.result.window = parseNonNegative(s, value());
+    else if (s == "--collision")
+      a.collision = true;
+    else if (s == "--clearance")
+      a.filter.clearance = parseNonNegative(s, value()), a.collision_option = true;
+    else if (s == "--collision-samples")
+      a.filter.samples = static_cast<int>(parseInt(s, value(), 0, 1000000)),
+      a.collision_option = true;
+    else if (s == "-o")
       a.out = value();
     else if (s == "--coverage")
       a.coverage = true;
@@ -114,14 +131,45 @@ bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* 
   return true;
 }
 
+// SPEC.md §2 "Collision fields": a `collision` object per branch and `collision_free_branches`.
+// False (after reporting the meshes' problems) when the scene cannot be built.
+bool addCollisionFields(const std::string& file, const Args& a, const relpos::Problem& pb,
+                        const relpos::Solution& sol, nlohmann::ordered_json* result) {
+  const std::string dir = fs::path(file).parent_path().string();
+  relpos::collision::MeshCache cache;
+  std::vector<relpos::Diagnostic> errors, warnings;
+  auto scene = relpos::collision::buildScene(pb, dir, cache, &errors, &warnings);
+  for (const auto& w : warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
+  for (const auto& e : errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+  if (!scene) return false;
+  relpos::collision::FilterOptions options = a.filter;
+  options.window = a.result.window;
+  options.seed = a.result.seed;
+  int free_branches = 0;
+  for (std::size_t b = 0; b < sol.branches.size(); ++b) {
+    const relpos::Branch& branch = sol.branches[b];
+    const relpos::NearestPose n = relpos::nearestOnBranch(branch, pb.mobile.pose);
+    const auto c = relpos::collision::filterBranch(*scene, branch, n, pb.mobile.pose, options);
+    free_branches += c.has_nearest_free || !c.free_samples.empty();
+    (*result)["branches"][b]["collision"] = relpos::collision::collisionToJson(
+        c, branch.manifold->dof(), scene->checkedAgainst(), options.clearance);
+  }
+  (*result)["collision_free_branches"] = free_branches;
+  return true;
+}
+
 int cmdSolve(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("solve takes exactly one spec file");
+  if (a.collision_option && !a.collision)
+    throw UsageError("--clearance and --collision-samples need --collision");
   relpos::Problem pb;
   if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
   relpos::Workspace ws;
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
-  const std::string text = relpos::resultToJson(pb, sol, a.result).dump(2) + "\n";
+  nlohmann::ordered_json result = relpos::resultToJson(pb, sol, a.result);
+  if (a.collision && !addCollisionFields(a.positional[0], a, pb, sol, &result)) return kExitInvalid;
+  const std::string text = result.dump(2) + "\n";
   if (a.out.empty())
     std::cout << text;
   else
@@ -256,7 +304,8 @@ std::vector<std::string> specFiles(const std::vector<std::string>& inputs) {
 int cmdTable(const Args& a, const Registry& reg) {
   if (a.positional.empty()) throw UsageError("table needs a folder or spec files");
   const auto files = specFiles(a.positional);
-  std::printf("%-36s %-13s %8s %-12s %10s\n", "name", "status", "branches", "DOF", "median us");
+  std::printf("%-36s %-13s %8s %-12s %10s%s\n", "name", "status", "branches", "DOF", "median us",
+              a.collision ? "  free branches" : "");
   int invalid = 0;
   relpos::Workspace ws;
   relpos::Solution sol;
@@ -279,8 +328,16 @@ int cmdTable(const Args& a, const Registry& reg) {
       std::string d = std::to_string(b.manifold->dof());
       if (dofs.find(d) == std::string::npos) dofs += (dofs.empty() ? "" : ",") + d;
     }
-    std::printf("%-36s %-13s %8zu %-12s %10.2f\n", pb.name.c_str(), relpos::toString(sol.status),
+    std::printf("%-36s %-13s %8zu %-12s %10.2f", pb.name.c_str(), relpos::toString(sol.status),
                 sol.branches.size(), dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
+    if (a.collision) {  // the collision-free branches (SPEC.md §2 collision_free_branches)
+      nlohmann::ordered_json result = relpos::resultToJson(pb, sol, a.result);
+      if (addCollisionFields(f, a, pb, sol, &result))
+        std::printf("  %13d", result["collision_free_branches"].get<int>());
+      else
+        std::printf("  %13s", "invalid"), ++invalid;
+    }
+    std::printf("\n");
   }
   std::printf("%zu specs, %d invalid\n", files.size(), invalid);
   return invalid ? kExitInvalid : kExitOk;

@@ -15,7 +15,9 @@ using json = nlohmann::ordered_json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-json poseJson(const Isometry3d& X, const Params& theta, int dof) {
+}  // namespace
+
+json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
   json j;
   json ps = json::array();
   for (int i = 0; i < dof; ++i) ps.push_back(num(theta[i]));
@@ -28,8 +30,6 @@ json poseJson(const Isometry3d& X, const Params& theta, int dof) {
   j["orientation"] = {q.x(), q.y(), q.z(), q.w()};
   return j;
 }
-
-}  // namespace
 
 json resultToJson(const Problem& problem, const Solution& solution, const ResultOptions& opt) {
   json r;
@@ -73,22 +73,15 @@ json resultToJson(const Problem& problem, const Solution& solution, const Result
     }
     jb["parameters"] = params;
     const NearestPose n = nearestOnBranch(solution.branches[b], problem.mobile.pose);
-    json jn = poseJson(n.pose, n.parameters, dof);
+    json jn = poseToJson(n.pose, n.parameters, dof);
     jn["distance"] = n.distance;
     jb["nearest"] = jn;
     if (n.distance < best_d) best_d = n.distance, best = static_cast<int>(b);
     if (opt.samples > 0) {
       json samples = json::array();
       for (int s = 0; s < opt.samples; ++s) {
-        Params t{};
-        for (int i = 0; i < dof; ++i) {
-          const Parameter p = m.parameter(i);
-          double lo = p.min, hi = p.max;
-          if (!std::isfinite(lo)) lo = n.parameters[i] - opt.window;
-          if (!std::isfinite(hi)) hi = n.parameters[i] + opt.window;
-          t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
-        }
-        samples.push_back(poseJson(m.pose(t), t, dof));
+        const Params t = sampleParameters(m, n.parameters, opt.window, rng);
+        samples.push_back(poseToJson(m.pose(t), t, dof));
       }
       jb["samples"] = samples;
     }

@@ -1,6 +1,7 @@
 #include "relpos/core/solver.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -352,6 +353,18 @@ NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial) {
   n.pose = b.manifold->pose(n.parameters);
   n.distance = poseDistance(n.pose, X_WM_initial);
   return n;
+}
+
+Params sampleParameters(const Manifold& m, const Params& centre, double window,
+                        std::mt19937_64& rng) {
+  Params t{};
+  for (int i = 0; i < m.dof(); ++i) {
+    const Parameter p = m.parameter(i);
+    const double lo = std::isfinite(p.min) ? p.min : centre[i] - window;
+    const double hi = std::isfinite(p.max) ? p.max : centre[i] + window;
+    t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
+  }
+  return t;
 }
 
 }  // namespace relpos

@@ -285,3 +285,70 @@ TEST(CliPlugins, EveryBadPluginIsOneLineAndExitTwo) {
 }
 
 }  // namespace
+
+namespace {
+
+const std::string kPartOnTable = RELPOS_DATA_DIR "/collision/part-on-table-beside-wall.json";
+
+TEST(CliCollision, SolveWritesTheCollisionFields) {
+  CmdResult r = run("solve " + kPartOnTable + " --collision --collision-samples 10 --seed 4");
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["collision_free_branches"], 1);
+  const auto& c = j["branches"][0]["collision"];
+  EXPECT_EQ(c["checked_against"], nlohmann::json({"table", "wall"}));
+  EXPECT_EQ(c["clearance"], 0.0);
+  EXPECT_EQ(c["nearest_collides"], true);
+  ASSERT_EQ(c["nearest_contacts"].size(), 1u);
+  EXPECT_EQ(c["nearest_contacts"][0]["object"], "wall");
+  EXPECT_GT(c["nearest_contacts"][0]["depth"].get<double>(), 0.0);
+  EXPECT_NEAR(c["nearest_free"]["position"][0].get<double>(), 0.38, 1e-6);
+  EXPECT_EQ(c["free_samples"].size() + c["blocked_samples"].get<std::size_t>(), 10u);
+  // Without --collision: none of these fields.
+  CmdResult plain = run("solve " + kPartOnTable);
+  nlohmann::json p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p.contains("collision_free_branches"));
+  EXPECT_FALSE(p["branches"][0].contains("collision"));
+}
+
+TEST(CliCollision, ClearanceWithoutCollisionIsAUsageError) {
+  CmdResult r = run("solve " + kPartOnTable + " --clearance 0.01");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--clearance and --collision-samples need --collision"), std::string::npos);
+}
+
+TEST(CliCollision, BadMeshesAreExitTwoWithTheirJsonPath) {
+  fs::path d = scratchDir();
+  std::ofstream(d / "garbage.off") << "not a mesh\n";
+  std::ofstream(d / "empty.off") << "OFF\n0 0 0\n";
+  std::ofstream(d / "quads.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  const std::string spec = slurp(kPartOnTable);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"missing.off", "mesh file not found"},
+      {"garbage.off", "unreadable mesh"},
+      {"empty.off", "empty mesh"},
+      {"quads.off", "not a triangle mesh"}};
+  for (const auto& [mesh, reason] : cases) {
+    std::string s = spec;
+    s.replace(s.find("meshes/part.off"), std::string("meshes/part.off").size(), mesh);
+    const fs::path file = d / ("bad-" + mesh + ".json");
+    std::ofstream(file) << s;
+    CmdResult r = run("solve " + file.string() + " --collision");
+    EXPECT_EQ(r.code, 2) << mesh;
+    EXPECT_NE(r.err.find(file.string() + ": mobile.mesh: " + reason), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+  }
+  // No mesh on the mobile object at all.
+  std::string s = spec;
+  s.replace(s.find("\"mesh\": \"meshes/part.off\","),
+            std::string("\"mesh\": \"meshes/part.off\",").size(), "");
+  const fs::path file = d / "no-mobile-mesh.json";
+  std::ofstream(file) << s;
+  CmdResult r = run("solve " + file.string() + " --collision");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("mobile.mesh: collision filtering needs a mesh for the mobile object"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace

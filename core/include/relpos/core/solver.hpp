@@ -2,6 +2,7 @@
 // solve(problem, registry, options, workspace, solution): decompose -> combine -> synthesise
 // (ARCHITECTURE.md). Never throws and never reads files on a valid problem; the status says what
 // happened. Reusing the Workspace and the Solution makes repeated solves allocation-free.
+#include <random>
 #include <string>
 #include <vector>
 
@@ -51,5 +52,10 @@ struct NearestPose {
   double distance = 0.0;
 };
 NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial);
+
+// Parameters drawn uniformly within the manifold's bounds; an unbounded one within ±window of
+// centre's (SPEC.md §2 `samples`: centre = the nearest pose's parameters).
+Params sampleParameters(const Manifold& m, const Params& centre, double window,
+                        std::mt19937_64& rng);
 
 }  // namespace relpos

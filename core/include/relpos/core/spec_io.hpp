@@ -42,6 +42,9 @@ struct ResultOptions {
   std::uint64_t seed = 0;
 };
 
+// A pose as SPEC.md §2 writes it: parameters, position, orientation (x, y, z, w with w ≥ 0).
+nlohmann::ordered_json poseToJson(const Isometry3d& X, const Params& theta, int dof);
+
 // The result document of SPEC.md §2: nearest pose per branch, best, samples, etc.
 nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
                                     const ResultOptions& options);

@@ -1,0 +1,77 @@
+#pragma once
+// The collision scene of one problem: the mobile object's mesh tested against the fixed object's
+// and every obstacle's (SPEC.md §2 "Collision fields"). FCL stays inside collision/src: models
+// are opaque here.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "relpos/collision/mesh.hpp"
+#include "relpos/core/problem.hpp"
+#include "relpos/core/spec_io.hpp"
+
+namespace relpos::collision {
+
+// A mesh turned into FCL's bounding-volume hierarchy, plus what the inside test needs.
+class CollisionModel;
+using ModelPtr = std::shared_ptr<const CollisionModel>;
+ModelPtr buildModel(const Mesh& mesh);
+
+// Models by file path, each read and built once (a batch run shares one cache across its specs
+// and threads).
+class MeshCache {
+ public:
+  // The model of the file at `path`, or nullptr with the reason in `error`; warnings (an open
+  // mesh) are returned again on every use.
+  ModelPtr get(const std::string& path, std::string* error, std::vector<std::string>* warnings);
+
+ private:
+  struct Entry {
+    ModelPtr model;
+    std::string error;
+    std::vector<std::string> warnings;
+  };
+  std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+};
+
+struct Contact {
+  std::string object;
+  double depth;  // penetration depth; negative: the missing distance to the clearance
+};
+
+struct SceneObject {
+  std::string name;
+  Isometry3d X_WO;  // its pose in the world
+  ModelPtr model;
+};
+
+// Penetration up to this depth is touching, not colliding (SPEC.md).
+inline constexpr double kTouchTolerance = 1e-6;
+
+class Scene {
+ public:
+  Scene(ModelPtr mobile, std::vector<SceneObject> others)
+      : mobile_(std::move(mobile)), others_(std::move(others)) {}
+  // Whether the mobile object at X_WM collides with anything: interpenetrates by more than
+  // kTouchTolerance, lies inside a closed mesh (or contains one), or comes closer than clearance.
+  // Appends one contact per object it collides with. Thread-safe (const).
+  bool collides(const Isometry3d& X_WM, double clearance,
+                std::vector<Contact>* contacts = nullptr) const;
+  std::vector<std::string> checkedAgainst() const;
+
+ private:
+  ModelPtr mobile_;
+  std::vector<SceneObject> others_;
+};
+
+// The scene of a problem: mesh paths relative to spec_dir. The mobile object needs a mesh; the
+// fixed object and the obstacles without one are left out. Errors and warnings carry the JSON
+// path ("mobile.mesh", "obstacles[1].mesh").
+std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spec_dir,
+                                  MeshCache& cache, std::vector<Diagnostic>* errors,
+                                  std::vector<Diagnostic>* warnings);
+
+}  // namespace relpos::collision
