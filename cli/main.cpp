@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
@@ -24,34 +25,7 @@
 namespace fs = std::filesystem;
 using relpos::Registry;
 
-namespace {
-
-constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
-
-const char* kUsage =
-    "usage:\n"
-    "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
-    "               [--collision [--clearance C] [--collision-samples N]]\n"
-    "  relpos rules [--coverage DIR-or-SPEC...]\n"
-    "  relpos table DIR-or-SPEC... [--repeat N] [--collision ...]\n"
-    "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-struct Args {
-  std::vector<std::string> positional;
-  bool coverage = false;
-  relpos::ResultOptions result;
-  std::string out;
-  int repeat = 200;
-  std::vector<std::string> plugins;
-  bool allow_override = false;
-  bool collision = false;
-  bool collision_option = false;  // --clearance or --collision-samples given
-  relpos::collision::FilterOptions filter;
-};
+namespace relpos::cli {
 
 double parseNonNegative(const std::string& flag, const std::string& v) {
   char* end = nullptr;
@@ -99,6 +73,8 @@ Args parseArgs(int argc, char** argv, int first) {
       a.coverage = true;
     else if (s == "--plugin")
       a.plugins.push_back(value());
+    else if (s == "--jobs")
+      a.jobs = static_cast<int>(parseInt(s, value(), 1, 1024));
     else if (s == "--allow-override")
       a.allow_override = true;
     else if (s.size() > 1 && s[0] == '-')
@@ -131,16 +107,11 @@ bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* 
   return true;
 }
 
-// SPEC.md §2 "Collision fields": a `collision` object per branch and `collision_free_branches`.
-// False (after reporting the meshes' problems) when the scene cannot be built.
-bool addCollisionFields(const std::string& file, const Args& a, const relpos::Problem& pb,
-                        const relpos::Solution& sol, nlohmann::ordered_json* result) {
-  const std::string dir = fs::path(file).parent_path().string();
-  relpos::collision::MeshCache cache;
-  std::vector<relpos::Diagnostic> errors, warnings;
-  auto scene = relpos::collision::buildScene(pb, dir, cache, &errors, &warnings);
-  for (const auto& w : warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
-  for (const auto& e : errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,
+                     const relpos::Solution& sol, relpos::collision::MeshCache& cache,
+                     nlohmann::ordered_json* result, std::vector<relpos::Diagnostic>* errors,
+                     std::vector<relpos::Diagnostic>* warnings) {
+  auto scene = relpos::collision::buildScene(pb, spec_dir, cache, errors, warnings);
   if (!scene) return false;
   relpos::collision::FilterOptions options = a.filter;
   options.window = a.result.window;
@@ -156,6 +127,18 @@ bool addCollisionFields(const std::string& file, const Args& a, const relpos::Pr
   }
   (*result)["collision_free_branches"] = free_branches;
   return true;
+}
+
+// The collision fields of a spec file, its meshes' problems reported on stderr.
+bool addCollisionFields(const std::string& file, const Args& a, const relpos::Problem& pb,
+                        const relpos::Solution& sol, nlohmann::ordered_json* result) {
+  relpos::collision::MeshCache cache;
+  std::vector<relpos::Diagnostic> errors, warnings;
+  const bool ok = collisionFields(fs::path(file).parent_path().string(), a, pb, sol, cache, result,
+                                  &errors, &warnings);
+  for (const auto& w : warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
+  for (const auto& e : errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+  return ok;
 }
 
 int cmdSolve(const Args& a, const Registry& reg) {
@@ -176,8 +159,6 @@ int cmdSolve(const Args& a, const Registry& reg) {
     writeFileAtomically(a.out, text);
   return kExitOk;
 }
-
-std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
 
 // How often each rule case fired over a folder of specs, and which never fired.
 int cmdRuleCoverage(const Args& a, const Registry& reg) {
@@ -263,6 +244,8 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   if (cmd == "solve" && a.positional.size() == 1) specs = a.positional;
   if ((cmd == "table" || (cmd == "rules" && a.coverage)) && !a.positional.empty())
     specs = specFiles(a.positional);
+  if (cmd == "batch" && a.positional.size() == 1 && fs::is_directory(a.positional[0]))
+    specs = specFiles(a.positional);
   for (const auto& spec : specs) {
     const auto paths = relpos::specPluginPaths(spec);
     for (std::size_t i = 0; i < paths.size(); ++i)
@@ -343,7 +326,9 @@ int cmdTable(const Args& a, const Registry& reg) {
   return invalid ? kExitInvalid : kExitOk;
 }
 
-}  // namespace
+}  // namespace relpos::cli
+
+using namespace relpos::cli;
 
 int main(int argc, char** argv) {
   try {
@@ -361,6 +346,7 @@ int main(int argc, char** argv) {
     if (cmd == "solve") return cmdSolve(a, reg);
     if (cmd == "rules") return cmdRules(a, reg);
     if (cmd == "table") return cmdTable(a, reg);
+    if (cmd == "batch") return cmdBatch(a, reg);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::cerr << "relpos: " << e.what() << "\n" << kUsage;

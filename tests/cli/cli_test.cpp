@@ -352,3 +352,130 @@ TEST(CliCollision, BadMeshesAreExitTwoWithTheirJsonPath) {
 }
 
 }  // namespace
+
+namespace {
+
+// Result lines without their timings (the only field that may differ between runs).
+std::vector<nlohmann::json> resultLines(const std::string& text) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    nlohmann::json j = nlohmann::json::parse(line);
+    j.erase("stats");
+    lines.push_back(j);
+  }
+  return lines;
+}
+
+const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
+
+TEST(CliBatch, OrderAndResultsDoNotDependOnTheThreadCount) {
+  for (const std::string& input : {std::string(RELPOS_DATA_DIR "/examples"), kBatchSample}) {
+    CmdResult one = run("batch " + input + " --jobs 1");
+    CmdResult four = run("batch " + input + " --jobs 4");
+    ASSERT_EQ(one.code, 0) << one.err;
+    ASSERT_EQ(four.code, 0) << four.err;
+    const auto a = resultLines(one.out), b = resultLines(four.out);
+    ASSERT_GT(a.size(), 60u);
+    EXPECT_EQ(a, b) << input;
+    EXPECT_NE(one.err.find("batch: " + std::to_string(a.size()) + " specs"), std::string::npos)
+        << one.err;
+  }
+  // Folder order is name order; JSONL order is line order.
+  const auto lines = resultLines(run("batch " + kBatchSample + " --jobs 3").out);
+  ASSERT_EQ(lines.size(), 100u);
+  std::istringstream in(slurp(kBatchSample));
+  std::string spec;
+  for (std::size_t i = 0; std::getline(in, spec); ++i)
+    EXPECT_EQ(lines[i]["name"], nlohmann::json::parse(spec)["name"]) << i;
+}
+
+TEST(CliBatch, EachLineIsWhatSolveWrites) {
+  fs::path d = scratchDir();
+  const auto lines =
+      resultLines(run("batch " RELPOS_DATA_DIR "/examples --samples 2 --seed 9").out);
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(RELPOS_DATA_DIR "/examples"))
+    files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_EQ(files.size(), lines.size());
+  for (std::size_t i = 0; i < files.size(); i += 7) {
+    CmdResult s = run("solve " + files[i] + " --samples 2 --seed 9");
+    nlohmann::json j = nlohmann::json::parse(s.out);
+    j.erase("stats");
+    EXPECT_EQ(j, lines[i]) << files[i];
+  }
+}
+
+TEST(CliBatch, InvalidSpecsBecomeLinesAndTheBatchGoesOn) {
+  const std::string good = slurp(RELPOS_DATA_DIR "/examples/pmf-simple-example.json");
+  std::string compact = nlohmann::json::parse(good).dump();
+  std::string unknown = compact;
+  unknown.replace(unknown.find("\"coincident\""), 12, "\"welded\"");
+  const fs::path file =
+      writeSpec("mixed.jsonl", compact + "\n{not json\n\n" + unknown + "\n" + compact + "\n");
+  CmdResult r = run("batch " + file.string() + " --jobs 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = resultLines(r.out);
+  ASSERT_EQ(lines.size(), 4u);  // the blank line is no spec
+  EXPECT_EQ(lines[0]["status"], "solved");
+  EXPECT_EQ(lines[1]["status"], "invalid");
+  EXPECT_EQ(lines[1]["name"], "mixed:2");
+  EXPECT_NE(lines[1]["message"].get<std::string>().find(file.string() + ":2: malformed JSON"),
+            std::string::npos)
+      << lines[1];
+  EXPECT_EQ(lines[2]["status"], "invalid");
+  EXPECT_EQ(lines[2]["name"], "pmf-simple-example");
+  EXPECT_NE(lines[2]["message"].get<std::string>().find(
+                file.string() + ":4: constraints[0].type: unknown constraint type 'welded'"),
+            std::string::npos)
+      << lines[2];
+  EXPECT_EQ(lines[3]["status"], "solved");
+  EXPECT_NE(r.err.find("invalid 2"), std::string::npos) << r.err;
+}
+
+TEST(CliBatch, EmptyInputAndNonSpecFiles) {
+  CmdResult empty = run("batch " + writeSpec("empty.jsonl", "").string());
+  EXPECT_EQ(empty.code, 0) << empty.err;
+  EXPECT_TRUE(empty.out.empty());
+  EXPECT_NE(empty.err.find("batch: 0 specs"), std::string::npos) << empty.err;
+  fs::path d = scratchDir() / "folder";
+  fs::create_directories(d);
+  fs::copy_file(RELPOS_DATA_DIR "/examples/pmf-simple-example.json", d / "a.json",
+                fs::copy_options::overwrite_existing);
+  std::ofstream(d / "notes.txt") << "not a spec";
+  std::ofstream(d / "b.json") << "{\"relpos\": 1}";
+  CmdResult r = run("batch " + d.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = resultLines(r.out);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0]["status"], "solved");
+  EXPECT_EQ(lines[1]["status"], "invalid");
+  EXPECT_EQ(lines[1]["name"], "b");
+}
+
+TEST(CliBatch, InterruptLeavesCompleteLinesInOrder) {
+  fs::path d = scratchDir();
+  const std::string input = (d / "many.jsonl").string(), out = (d / "out.jsonl").string();
+  std::string many;
+  const std::string sample = slurp(kBatchSample);
+  for (int k = 0; k < 300; ++k) many += sample;  // 30,000 specs: longer than the 1 s below
+  std::ofstream(input) << many;
+  const std::string cmd = "timeout --preserve-status -s INT 1 " + std::string(RELPOS_EXE) +
+                          " batch " + input + " --jobs 2 -o " + out + " 2>" + (d / "err").string();
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(d / "err");
+  const std::string text = slurp(out);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+  const auto lines = resultLines(text);
+  EXPECT_LT(lines.size(), 30000u);
+  std::istringstream in(many);
+  std::string spec;
+  for (std::size_t i = 0; i < lines.size() && std::getline(in, spec); ++i)
+    ASSERT_EQ(lines[i]["name"], nlohmann::json::parse(spec)["name"]) << i;
+  EXPECT_NE(slurp(d / "err").find("before the interruption"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,93 @@
+// What one batch line costs, stage by stage, on the bundled generated grasp and weld specs
+// (data/batch): parsing the spec text, solving, the nearest pose of every branch, and writing the
+// result line. One thread; `relpos batch --jobs N` runs N of these pipelines.
+//   build/bench/relpos_batch_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "relpos/core/solver.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "relpos/rules/builtin.hpp"
+
+namespace {
+
+const relpos::Registry& registry() {
+  static const relpos::Registry reg = [] {
+    relpos::Registry r;
+    relpos::registerBuiltins(r);
+    r.freeze();
+    return r;
+  }();
+  return reg;
+}
+
+const std::vector<std::string>& lines() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> v;
+    std::ifstream in(RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl");
+    for (std::string line; std::getline(in, line);) v.push_back(line);
+    return v;
+  }();
+  return all;
+}
+
+void BM_Parse(benchmark::State& state) {
+  std::size_t i = 0;
+  for (auto _ : state) {
+    relpos::ParseResult r = relpos::parseSpec(lines()[i++ % lines().size()], registry());
+    benchmark::DoNotOptimize(r.problem);
+  }
+}
+BENCHMARK(BM_Parse);
+
+std::vector<relpos::Problem> problems() {
+  std::vector<relpos::Problem> v;
+  for (const auto& l : lines()) v.push_back(*relpos::parseSpec(l, registry()).problem);
+  return v;
+}
+
+void BM_Solve(benchmark::State& state) {
+  const auto ps = problems();
+  relpos::Workspace ws;
+  relpos::Solution s;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    relpos::solve(ps[i++ % ps.size()], registry(), relpos::SolverOptions(), ws, s);
+    benchmark::DoNotOptimize(s.branches.data());
+  }
+}
+BENCHMARK(BM_Solve);
+
+void BM_NearestOfEveryBranch(benchmark::State& state) {
+  const auto ps = problems();
+  std::vector<relpos::Solution> sols;
+  for (const auto& p : ps) sols.push_back(relpos::solve(p, registry()));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % ps.size();
+    for (const auto& b : sols[k].branches)
+      benchmark::DoNotOptimize(relpos::nearestOnBranch(b, ps[k].mobile.pose).distance);
+  }
+}
+BENCHMARK(BM_NearestOfEveryBranch);
+
+void BM_WholeLine(benchmark::State& state) {
+  relpos::Workspace ws;
+  relpos::Solution s;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    relpos::ParseResult r = relpos::parseSpec(lines()[i++ % lines().size()], registry());
+    relpos::solve(*r.problem, registry(), relpos::SolverOptions(), ws, s);
+    const std::string out = relpos::resultToJson(*r.problem, s, relpos::ResultOptions()).dump();
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_WholeLine);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,260 @@
+// relpos batch (SPEC.md §3): many specs, one result line each, in input order whatever the
+// thread count. Workers parse and solve; the main thread writes finished lines in order as soon
+// as they are next, draws the progress bar, and prints the summary.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "cli.hpp"
+#include "relpos/core/solver.hpp"
+
+namespace relpos::cli {
+namespace {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void onInterrupt(int) { g_interrupted.store(true); }
+
+struct Item {
+  std::string source;  // the file, or "FILE.jsonl:LINE"
+  std::string text;    // a JSONL line; empty: read `source` in the worker
+  std::string dir;     // what relative mesh paths are relative to
+  std::string name;    // default name: the file's stem, or "FILE:LINE"
+};
+
+struct Outcome {
+  std::string line;
+  std::string name, status;
+  std::vector<int> dofs;
+  double solve_us = 0.0, total_us = 0.0;
+};
+
+std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
+
+// The specs of a folder (*.json in name order; other files are not specs) or of a JSONL file
+// (one spec per non-blank line).
+std::vector<Item> collectItems(const std::string& input) {
+  std::vector<Item> items;
+  if (fs::is_directory(input)) {
+    for (const auto& f : specFiles({input}))
+      items.push_back({f, "", fs::path(f).parent_path().string(), stem(f)});
+    return items;
+  }
+  std::ifstream in(input, std::ios::binary);
+  if (!in) throw UsageError("cannot read '" + input + "'");
+  const std::string dir = fs::path(input).parent_path().string();
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const std::string where = input + ":" + std::to_string(n);
+    items.push_back({where, std::move(line), dir, stem(input) + ":" + std::to_string(n)});
+  }
+  return items;
+}
+
+nlohmann::ordered_json invalidLine(const std::string& name, const std::string& message) {
+  nlohmann::ordered_json j;
+  j["relpos"] = 1;
+  j["name"] = name;
+  j["status"] = "invalid";
+  j["message"] = message;
+  return j;
+}
+
+// An invalid spec's "name" when it has a readable one, else the file's stem or "FILE:LINE".
+std::string specName(const Item& item) {
+  std::string text = item.text;
+  if (text.empty()) {
+    std::ifstream in(item.source, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_object() && j.contains("name") && j["name"].is_string())
+    return j["name"].get<std::string>();
+  return item.name;
+}
+
+// Parses and solves one spec into its result line (every problem of an invalid spec joined into
+// its message, "SOURCE: json.path: what").
+Outcome run(const Item& item, const Args& a, const Registry& reg, collision::MeshCache& cache,
+            Workspace& ws, Solution& sol) {
+  const auto t0 = Clock::now();
+  Outcome out;
+  ParseResult parsed;
+  if (item.text.empty()) {
+    parsed = parseSpecFile(item.source, reg);
+  } else {
+    parsed = parseSpec(item.text, reg, item.name);
+  }
+  if (!parsed.problem) {
+    std::string message;
+    for (const auto& e : parsed.errors)
+      message += (message.empty() ? "" : "; ") + formatDiagnostic(item.source, e);
+    out.name = specName(item);
+    out.status = "invalid";
+    out.line = invalidLine(out.name, message).dump();
+  } else {
+    const Problem& pb = *parsed.problem;
+    solve(pb, reg, SolverOptions(), ws, sol);
+    nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
+    std::vector<Diagnostic> errors, warnings;
+    if (a.collision && !collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings)) {
+      std::string message;
+      for (const auto& e : errors)
+        message += (message.empty() ? "" : "; ") + formatDiagnostic(item.source, e);
+      result = invalidLine(pb.name, message);
+    }
+    out.name = pb.name;
+    out.status = result["status"].get<std::string>();
+    for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
+    out.solve_us = sol.solve_us;
+    out.line = result.dump();
+  }
+  out.total_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+  return out;
+}
+
+void drawProgress(std::size_t done, std::size_t total, double seconds) {
+  const int width = 30;
+  const double f = total ? static_cast<double>(done) / total : 1.0;
+  const double rate = seconds > 0 ? done / seconds : 0.0;
+  const double eta = rate > 0 ? (total - done) / rate : 0.0;
+  std::string bar(static_cast<std::size_t>(f * width), '#');
+  bar.resize(width, '.');
+  std::fprintf(stderr, "\r[%s] %zu/%zu  %.0f specs/s  ETA %.1f s ", bar.c_str(), done, total, rate,
+               eta);
+  std::fflush(stderr);
+}
+
+void printSummary(const std::vector<Outcome>& outcomes, std::size_t written, double seconds,
+                  int jobs, bool interrupted) {
+  std::map<std::string, int> by_status;
+  std::map<int, int> dof_histogram;
+  std::vector<double> solve_us, total_us;
+  for (std::size_t i = 0; i < written; ++i) {
+    const Outcome& o = outcomes[i];
+    ++by_status[o.status];
+    for (int d : o.dofs) ++dof_histogram[d];
+    if (o.status != "invalid") solve_us.push_back(o.solve_us);
+    total_us.push_back(o.total_us);
+  }
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  std::ostringstream s;
+  s << "batch: " << written << (interrupted ? " specs before the interruption" : " specs") << " in "
+    << seconds << " s (" << static_cast<long>(seconds > 0 ? written / seconds : 0.0) << " specs/s, "
+    << jobs << (jobs == 1 ? " thread)\n" : " threads)\n");
+  s << "  status:";
+  for (const auto& [status, n] : by_status) s << " " << status << " " << n;
+  s << "\n  branch DOF:";
+  for (const auto& [dof, n] : dof_histogram) s << " " << dof << ":" << n;
+  s << "\n  per spec: median " << median(total_us) << " us parse+solve+write (thread time), "
+    << "median solve " << median(solve_us) << " us\n";
+  std::vector<std::size_t> order(written);
+  for (std::size_t i = 0; i < written; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+    return outcomes[x].solve_us > outcomes[y].solve_us;
+  });
+  s << "  slowest solves:";
+  for (std::size_t k = 0; k < std::min<std::size_t>(5, order.size()); ++k)
+    s << " " << outcomes[order[k]].name << " (" << outcomes[order[k]].solve_us << " us)";
+  s << "\n";
+  std::cerr << s.str();
+}
+
+}  // namespace
+
+int cmdBatch(const Args& a, const Registry& reg) {
+  if (a.positional.size() != 1) throw UsageError("batch takes one folder or one JSONL file");
+  if (a.collision_option && !a.collision)
+    throw UsageError("--clearance and --collision-samples need --collision");
+  const std::vector<Item> items = collectItems(a.positional[0]);
+  const int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+
+  std::ofstream file;
+  if (!a.out.empty()) {
+    file.open(a.out, std::ios::binary | std::ios::trunc);
+    if (!file) throw UsageError("cannot write '" + a.out + "'");
+  }
+  std::ostream& out = a.out.empty() ? std::cout : file;
+  // The bar goes to stderr, on a terminal, unless the result lines go to that terminal too.
+  const bool progress = isatty(STDERR_FILENO) && !(a.out.empty() && isatty(STDOUT_FILENO));
+
+  g_interrupted.store(false);
+  auto previous = std::signal(SIGINT, onInterrupt);
+
+  std::vector<Outcome> outcomes(items.size());
+  std::unique_ptr<std::atomic<bool>[]> done(new std::atomic<bool>[items.size()]);
+  for (std::size_t i = 0; i < items.size(); ++i) done[i].store(false);
+  std::atomic<std::size_t> next_item{0};
+  collision::MeshCache cache;
+  auto worker = [&] {
+    Workspace ws;
+    Solution sol;
+    for (;;) {
+      if (g_interrupted.load()) return;
+      const std::size_t i = next_item.fetch_add(1);
+      if (i >= items.size()) return;
+      outcomes[i] = run(items[i], a, reg, cache, ws, sol);
+      done[i].store(true, std::memory_order_release);
+    }
+  };
+  const auto t0 = Clock::now();
+  std::vector<std::thread> threads;
+  for (int k = 0; k < jobs; ++k) threads.emplace_back(worker);
+
+  // Write in order: line i as soon as lines 0..i are finished.
+  std::size_t written = 0;
+  auto last_draw = Clock::now();
+  auto writeReady = [&] {
+    while (written < items.size() && done[written].load(std::memory_order_acquire)) {
+      out << outcomes[written].line << '\n';
+      outcomes[written].line.clear();
+      outcomes[written].line.shrink_to_fit();
+      ++written;
+    }
+  };
+  while (written < items.size() && !g_interrupted.load()) {
+    writeReady();
+    if (progress && Clock::now() - last_draw > std::chrono::milliseconds(100)) {
+      drawProgress(written, items.size(), std::chrono::duration<double>(Clock::now() - t0).count());
+      last_draw = Clock::now();
+    }
+    if (written < items.size()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  for (auto& t : threads) t.join();
+  writeReady();  // after an interruption: every line finished before it, still in order
+  out.flush();
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (progress) {
+    drawProgress(written, items.size(), seconds);
+    std::fputc('\n', stderr);
+  }
+  std::signal(SIGINT, previous);
+  const bool interrupted = written < items.size();
+  printSummary(outcomes, written, seconds, jobs, interrupted);
+  if (!out) {
+    std::cerr << "relpos: cannot write the results\n";
+    return kExitInternal;
+  }
+  return interrupted ? kExitInterrupted : kExitOk;
+}
+
+}  // namespace relpos::cli

@@ -1,0 +1,58 @@
+#pragma once
+// What the relpos command's files share: options, exit codes, spec discovery, collision fields.
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "relpos/collision/branch_filter.hpp"
+#include "relpos/core/registry.hpp"
+#include "relpos/core/spec_io.hpp"
+
+namespace relpos::cli {
+
+inline constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
+// Batch interrupted by Ctrl-C (the results written so far are complete lines, in order).
+inline constexpr int kExitInterrupted = 130;
+
+inline const char* const kUsage =
+    "usage:\n"
+    "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
+    "               [--collision [--clearance C] [--collision-samples N]]\n"
+    "  relpos rules [--coverage DIR-or-SPEC...]\n"
+    "  relpos table DIR-or-SPEC... [--repeat N] [--collision ...]\n"
+    "  relpos batch DIR-or-FILE.jsonl [--jobs N] [-o OUT.jsonl] [solve options]\n"
+    "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Args {
+  int jobs = 0;  // batch: worker threads (0: every core)
+  std::vector<std::string> positional;
+  bool coverage = false;
+  relpos::ResultOptions result;
+  std::string out;
+  int repeat = 200;
+  std::vector<std::string> plugins;
+  bool allow_override = false;
+  bool collision = false;
+  bool collision_option = false;  // --clearance or --collision-samples given
+  relpos::collision::FilterOptions filter;
+};
+
+// The spec files of folders (their *.json in name order) and files given on the command line.
+std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
+
+// Adds SPEC.md §2's collision fields to a result: a `collision` object per branch and
+// `collision_free_branches`. False when the scene cannot be built (errors say why).
+bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,
+                     const relpos::Solution& sol, relpos::collision::MeshCache& cache,
+                     nlohmann::ordered_json* result, std::vector<relpos::Diagnostic>* errors,
+                     std::vector<relpos::Diagnostic>* warnings);
+
+// relpos batch (SPEC.md §3).
+int cmdBatch(const Args& a, const relpos::Registry& reg);
+
+}  // namespace relpos::cli
