@@ -1,7 +1,8 @@
 // What one batch line costs, stage by stage, on the bundled generated grasp and weld specs
 // (data/batch): parsing the spec text, solving, the nearest pose of every branch, and writing the
 // result line. One thread; `relpos batch --jobs N` runs N of these pipelines.
-//   build/bench/relpos_batch_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   build/bench/relpos_batch_bench --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <fstream>
@@ -14,16 +15,6 @@
 #include "relpos/rules/builtin.hpp"
 
 namespace {
-
-const relpos::Registry& registry() {
-  static const relpos::Registry reg = [] {
-    relpos::Registry r;
-    relpos::registerBuiltins(r);
-    r.freeze();
-    return r;
-  }();
-  return reg;
-}
 
 const std::vector<std::string>& lines() {
   static const std::vector<std::string> all = [] {
@@ -38,7 +29,8 @@ const std::vector<std::string>& lines() {
 void BM_Parse(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
-    relpos::ParseResult r = relpos::parseSpec(lines()[i++ % lines().size()], registry());
+    relpos::ParseResult r =
+        relpos::parseSpec(lines()[i++ % lines().size()], relpos::builtinRegistry());
     benchmark::DoNotOptimize(r.problem);
   }
 }
@@ -46,7 +38,8 @@ BENCHMARK(BM_Parse);
 
 std::vector<relpos::Problem> problems() {
   std::vector<relpos::Problem> v;
-  for (const auto& l : lines()) v.push_back(*relpos::parseSpec(l, registry()).problem);
+  for (const auto& l : lines())
+    v.push_back(*relpos::parseSpec(l, relpos::builtinRegistry()).problem);
   return v;
 }
 
@@ -56,7 +49,7 @@ void BM_Solve(benchmark::State& state) {
   relpos::Solution s;
   std::size_t i = 0;
   for (auto _ : state) {
-    relpos::solve(ps[i++ % ps.size()], registry(), relpos::SolverOptions(), ws, s);
+    relpos::solve(ps[i++ % ps.size()], relpos::builtinRegistry(), relpos::SolverOptions(), ws, s);
     benchmark::DoNotOptimize(s.branches.data());
   }
 }
@@ -65,7 +58,7 @@ BENCHMARK(BM_Solve);
 void BM_NearestOfEveryBranch(benchmark::State& state) {
   const auto ps = problems();
   std::vector<relpos::Solution> sols;
-  for (const auto& p : ps) sols.push_back(relpos::solve(p, registry()));
+  for (const auto& p : ps) sols.push_back(relpos::solve(p, relpos::builtinRegistry()));
   std::size_t i = 0;
   for (auto _ : state) {
     const std::size_t k = i++ % ps.size();
@@ -80,8 +73,9 @@ void BM_WholeLine(benchmark::State& state) {
   relpos::Solution s;
   std::size_t i = 0;
   for (auto _ : state) {
-    relpos::ParseResult r = relpos::parseSpec(lines()[i++ % lines().size()], registry());
-    relpos::solve(*r.problem, registry(), relpos::SolverOptions(), ws, s);
+    relpos::ParseResult r =
+        relpos::parseSpec(lines()[i++ % lines().size()], relpos::builtinRegistry());
+    relpos::solve(*r.problem, relpos::builtinRegistry(), relpos::SolverOptions(), ws, s);
     const std::string out = relpos::resultToJson(*r.problem, s, relpos::ResultOptions()).dump();
     benchmark::DoNotOptimize(out.data());
   }

@@ -57,11 +57,23 @@ Mesh tessellatedBox(const Vector3d& h, int n) {
   return m;
 }
 
+// The part (20 x 10 x 6 cm, bottom face at its frame's z = 0) resting on a table beside a wall:
+// the part an n x n-gridded box (12 n² triangles), table and wall m x m-gridded.
+relpos::collision::Scene partOnTableScene(int n, int m) {
+  using namespace relpos;
+  Isometry3d table = Isometry3d::Identity(), wall = Isometry3d::Identity();
+  table.translation() = Vector3d(0, 0, -0.02);
+  wall.translation() = Vector3d(0.5, 0, 0.15);
+  Mesh part = tessellatedBox(Vector3d(0.1, 0.05, 0.03), n);
+  for (auto& v : part.vertices) v.z() += 0.03;
+  return collision::Scene(
+      collision::buildModel(part),
+      {{"table", table, collision::buildModel(tessellatedBox(Vector3d(0.6, 0.4, 0.02), m))},
+       {"wall", wall, collision::buildModel(tessellatedBox(Vector3d(0.02, 0.4, 0.15), m))}});
+}
+
 void BM_CollisionFilteredSolve(benchmark::State& state) {
   using namespace relpos;
-  Registry registry;
-  registerBuiltins(registry);
-  registry.freeze();
   Problem p;
   p.addFixedFeature("top", Feature::makePlane({0, 0, 0}, {0, 0, 1}))
       .addFixedFeature("lane", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
@@ -73,43 +85,32 @@ void BM_CollisionFilteredSolve(benchmark::State& state) {
       .addConstraint("parallel", "lane", "long");
   p.mobile.pose.translation() = Vector3d(0.45, 0.02, 0.05);
   const int n = static_cast<int>(state.range(0));
-  Isometry3d table = Isometry3d::Identity(), wall = Isometry3d::Identity();
-  table.translation() = Vector3d(0, 0, -0.02);
-  wall.translation() = Vector3d(0.5, 0, 0.15);
-  Mesh part = tessellatedBox(Vector3d(0.1, 0.05, 0.03), n);
-  for (auto& v : part.vertices) v.z() += 0.03;  // bottom face at the frame's z = 0
-  const collision::Scene scene(
-      collision::buildModel(part),
-      {{"table", table, collision::buildModel(tessellatedBox(Vector3d(0.6, 0.4, 0.02), n))},
-       {"wall", wall, collision::buildModel(tessellatedBox(Vector3d(0.02, 0.4, 0.15), n))}});
+  const collision::Scene scene = partOnTableScene(n, static_cast<int>(state.range(1)));
   Workspace ws;
   Solution s;
   collision::FilterOptions opt;
   opt.samples = 64;
   for (auto _ : state) {
-    solve(p, registry, SolverOptions(), ws, s);
+    solve(p, builtinRegistry(), SolverOptions(), ws, s);
     const NearestPose near = nearestOnBranch(s.branches[0], p.mobile.pose);
     const auto c = collision::filterBranch(scene, s.branches[0], near, p.mobile.pose, opt);
     benchmark::DoNotOptimize(c.blocked_samples);
   }
-  state.counters["triangles_per_mesh"] = 12.0 * n * n;
+  state.counters["part_triangles"] = 12.0 * n * n;
 }
-BENCHMARK(BM_CollisionFilteredSolve)->Arg(29)->Arg(10)->Unit(benchmark::kMicrosecond);
+// Args: part grid, table/wall grid. 29: ~10k triangles; 1: a plain 12-triangle box.
+BENCHMARK(BM_CollisionFilteredSolve)
+    ->Args({29, 29})
+    ->Args({29, 1})
+    ->Args({10, 10})
+    ->Unit(benchmark::kMicrosecond);
 
 // The same branch, only the 64 sample verdicts (no nearest-free search): the cost per pose of a
 // part resting on a table (every pose touches it) beside a wall.
 void BM_SixtyFourRestingSamples(benchmark::State& state) {
   using namespace relpos;
-  const int n = static_cast<int>(state.range(0));
-  Isometry3d table = Isometry3d::Identity(), wall = Isometry3d::Identity();
-  table.translation() = Vector3d(0, 0, -0.02);
-  wall.translation() = Vector3d(0.5, 0, 0.15);
-  Mesh part = tessellatedBox(Vector3d(0.1, 0.05, 0.03), n);
-  for (auto& v : part.vertices) v.z() += 0.03;
-  const collision::Scene scene(
-      collision::buildModel(part),
-      {{"table", table, collision::buildModel(tessellatedBox(Vector3d(0.6, 0.4, 0.02), n))},
-       {"wall", wall, collision::buildModel(tessellatedBox(Vector3d(0.02, 0.4, 0.15), n))}});
+  const collision::Scene scene =
+      partOnTableScene(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   for (auto _ : state) {
     int blocked = 0;
     for (int k = 0; k < 64; ++k) {
@@ -120,7 +121,7 @@ void BM_SixtyFourRestingSamples(benchmark::State& state) {
     benchmark::DoNotOptimize(blocked);
   }
 }
-BENCHMARK(BM_SixtyFourRestingSamples)->Arg(29)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SixtyFourRestingSamples)->Args({29, 29})->Args({29, 1})->Unit(benchmark::kMicrosecond);
 
 // A closed cylinder of radius r and height z1 − z0 about the z axis: `sides` around, `rings`
 // along, fan-capped (2·sides·rings + 2·sides triangles), wound outward.
@@ -170,9 +171,6 @@ Mesh moved(Mesh m, const Vector3d& by) {
 // samples each, as `relpos solve --collision` does, including the nearest-free search.
 void BM_GraspCollisionFilteredSolve(benchmark::State& state) {
   using namespace relpos;
-  Registry registry;
-  registerBuiltins(registry);
-  registry.freeze();
   Problem p;
   p.fixed.pose.translation() = Vector3d(0.4, 0.1, 0.0);
   p.addFixedFeature("axis", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
@@ -204,7 +202,7 @@ void BM_GraspCollisionFilteredSolve(benchmark::State& state) {
   opt.samples = 64;
   int free_samples = 0;
   for (auto _ : state) {
-    solve(p, registry, SolverOptions(), ws, s);
+    solve(p, builtinRegistry(), SolverOptions(), ws, s);
     free_samples = 0;
     for (const Branch& b : s.branches) {
       const NearestPose near = nearestOnBranch(b, p.mobile.pose);

@@ -16,18 +16,8 @@
 
 namespace {
 
-const relpos::Registry& registry() {
-  static const relpos::Registry reg = [] {
-    relpos::Registry r;
-    relpos::registerBuiltins(r);
-    r.freeze();
-    return r;
-  }();
-  return reg;
-}
-
 relpos::Problem load(const std::string& file) {
-  relpos::ParseResult r = relpos::parseSpecFile(file, registry());
+  relpos::ParseResult r = relpos::parseSpecFile(file, relpos::builtinRegistry());
   if (!r.problem) throw std::runtime_error("cannot parse " + file);
   return *r.problem;
 }
@@ -37,7 +27,7 @@ void BM_Solve(benchmark::State& state, const std::string& file) {
   relpos::Workspace ws;
   relpos::Solution s;
   for (auto _ : state) {
-    relpos::solve(p, registry(), relpos::SolverOptions(), ws, s);
+    relpos::solve(p, relpos::builtinRegistry(), relpos::SolverOptions(), ws, s);
     benchmark::DoNotOptimize(s.branches.data());
   }
   state.counters["branches"] = static_cast<double>(s.branches.size());
@@ -46,7 +36,7 @@ void BM_Solve(benchmark::State& state, const std::string& file) {
 
 void BM_NearestWorkedExample(benchmark::State& state) {
   const relpos::Problem p = load(RELPOS_DATA_DIR "/examples/pmf-simple-example.json");
-  relpos::Solution s = relpos::solve(p, registry());
+  relpos::Solution s = relpos::solve(p, relpos::builtinRegistry());
   for (auto _ : state) {
     relpos::NearestPose n = relpos::nearestOnBranch(s.branches[0], p.mobile.pose);
     benchmark::DoNotOptimize(n.distance);

@@ -20,16 +20,6 @@ namespace {
 using namespace relpos;
 using Clock = std::chrono::steady_clock;
 
-const Registry& registry() {
-  static const Registry reg = [] {
-    Registry r;
-    registerBuiltins(r);
-    r.freeze();
-    return r;
-  }();
-  return reg;
-}
-
 struct Stats {
   std::vector<double> us;
   int success = 0, attempts = 0, converged = 0;
@@ -75,11 +65,12 @@ void runOne(const Problem& p, Row& row, bool single) {
   const int reps = single ? 200 : 20;
   Workspace ws;
   Solution s;
-  time(reps, single, row.relpos.us, [&] { solve(p, registry(), SolverOptions(), ws, s); });
+  time(reps, single, row.relpos.us,
+       [&] { solve(p, relpos::builtinRegistry(), SolverOptions(), ws, s); });
   NearestPose best;
   double best_d = 1e300;
   time(single ? 50 : 5, single, row.relpos_nearest.us, [&] {
-    solve(p, registry(), SolverOptions(), ws, s);
+    solve(p, relpos::builtinRegistry(), SolverOptions(), ws, s);
     for (const auto& b : s.branches) {
       const NearestPose n = nearestOnBranch(b, p.mobile.pose);
       if (n.distance < best_d) best_d = n.distance, best = n;
@@ -115,7 +106,7 @@ void runOne(const Problem& p, Row& row, bool single) {
 }
 
 Problem load(const std::string& file) {
-  ParseResult r = parseSpecFile(file, registry());
+  ParseResult r = parseSpecFile(file, relpos::builtinRegistry());
   if (!r.problem) throw std::runtime_error("cannot parse " + file);
   return *r.problem;
 }
@@ -156,7 +147,7 @@ int main() {
   batch.name = "100 random grasp/weld specs";
   std::ifstream in(d + "/batch/grasp-and-weld-100.jsonl");
   for (std::string line; std::getline(in, line);) {
-    ParseResult r = parseSpec(line, registry());
+    ParseResult r = parseSpec(line, relpos::builtinRegistry());
     if (r.problem) runOne(*r.problem, batch, false);
   }
   rows.push_back(batch);

@@ -31,7 +31,7 @@ Params compassSearch(const Manifold& m, const Isometry3d& X, const Parameter* pa
                      double* best_d) {
   const int n = m.dof();
   double step = 0.25;
-  for (int iter = 0; iter < 200 && step > 1e-10; ++iter) {
+  for (int iter = 0; iter < 200 && step > 1e-8; ++iter) {
     bool improved = false;
     for (int i = 0; i < n; ++i) {
       for (double sgn : {1.0, -1.0}) {

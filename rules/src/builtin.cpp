@@ -26,4 +26,14 @@ void registerBuiltins(Registry& r) {
   manifolds::registerBuiltinManifolds(r);
   manifolds::registerMixedManifolds(r);
 }
+
+const Registry& builtinRegistry() {
+  static const Registry registry = [] {
+    Registry r;
+    registerBuiltins(r);
+    r.freeze();
+    return r;
+  }();
+  return registry;
+}
 }  // namespace relpos

@@ -11,15 +11,7 @@
 
 namespace relpos::test {
 
-const Registry& builtinRegistry() {
-  static const Registry reg = [] {
-    Registry r;
-    registerBuiltins(r);
-    r.freeze();
-    return r;
-  }();
-  return reg;
-}
+const Registry& builtinRegistry() { return relpos::builtinRegistry(); }
 
 Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
   return plugins::sampleParams(m, rng, window);

@@ -23,4 +23,6 @@ void registerBuiltinRules(Registry& registry);
 namespace relpos {
 // Registers every built-in constraint type, rule and manifold, then returns. Does not freeze.
 void registerBuiltins(Registry& registry);
+// One frozen registry holding the built-ins, made on first use (tests, benchmarks, tools).
+const Registry& builtinRegistry();
 }  // namespace relpos
