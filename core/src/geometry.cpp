@@ -45,7 +45,12 @@ double angleBetween(const Vector3d& a, const Vector3d& b) {
 }
 
 double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
-  return Eigen::AngleAxisd(a.transpose() * b).angle();
+  // The angle of D = aᵀb from its trace (cos) and its skew part (sin): atan2 keeps full precision
+  // near 0 and π, without the quaternion and axis Eigen::AngleAxisd would also compute.
+  const Matrix3d D = a.transpose() * b;
+  const double c = 0.5 * (D.trace() - 1.0);
+  const double s = 0.5 * Vector3d(D(2, 1) - D(1, 2), D(0, 2) - D(2, 0), D(1, 0) - D(0, 1)).norm();
+  return std::atan2(s, c);
 }
 
 bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,

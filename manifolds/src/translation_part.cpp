@@ -214,9 +214,18 @@ Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
     N.row(i) = rows.n[i].transpose();
     h[i] = rows.h0[i] + (rows.ranged[i] >= 0 ? rows.sign[i] * v[rows.ranged[i]] : 0.0);
   }
-  const Eigen::MatrixXd Nk = N.topRows(rows.k);
-  const Eigen::MatrixXd G = Nk * Nk.transpose();
-  const Vector3d T = Nk.transpose() * G.ldlt().solve(h.head(rows.k));
+  // The point of the planes' intersection nearest the origin, T = Nₖᵀ (Nₖ Nₖᵀ)⁻¹ h, with
+  // fixed-size matrices so evaluating a pose never allocates.
+  Vector3d T = Vector3d::Zero();
+  if (rows.k == 3) {
+    T = N.partialPivLu().solve(h);
+  } else if (rows.k == 2) {
+    const Eigen::Matrix<double, 2, 3> N2 = N.topRows<2>();
+    const Eigen::Matrix2d G = N2 * N2.transpose();
+    T = N2.transpose() * G.inverse() * h.head<2>();
+  } else if (rows.k == 1) {
+    T = rows.n[0] * (h[0] / rows.n[0].squaredNorm());
+  }
   if (rows.k == 2) free[0] = rows.n[0].cross(rows.n[1]).normalized();
   if (rows.k == 1) {
     free[0] = rows.e1;
