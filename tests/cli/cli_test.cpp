@@ -479,3 +479,31 @@ TEST(CliBatch, InterruptLeavesCompleteLinesInOrder) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliBatch, CollisionOptionsApplyToEveryLine) {
+  CmdResult r =
+      run("batch " RELPOS_DATA_DIR "/collision --collision --collision-samples 8 --jobs 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = resultLines(r.out);
+  ASSERT_EQ(lines.size(), 3u);
+  for (const auto& j : lines) {
+    ASSERT_TRUE(j.contains("collision_free_branches")) << j["name"];
+    for (const auto& b : j["branches"]) {
+      ASSERT_TRUE(b.contains("collision"));
+      const std::size_t n = b["collision"]["free_samples"].size() +
+                            b["collision"]["blocked_samples"].get<std::size_t>();
+      EXPECT_EQ(n, b["dof"] == 0 ? 1u : 8u) << j["name"];
+    }
+  }
+  // The same as solving each alone.
+  CmdResult one =
+      run("solve " RELPOS_DATA_DIR
+          "/collision/part-on-table-beside-wall.json --collision --collision-samples 8");
+  nlohmann::json j = nlohmann::json::parse(one.out);
+  j.erase("stats");
+  EXPECT_EQ(j, lines[1]);
+}
+
+}  // namespace
