@@ -246,6 +246,18 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
     specs = specFiles(a.positional);
   if (cmd == "batch" && a.positional.size() == 1 && fs::is_directory(a.positional[0]))
     specs = specFiles(a.positional);
+  if (cmd == "batch" && a.positional.size() == 1 && fs::is_regular_file(a.positional[0])) {
+    // A JSONL file: each line's list, relative to the file's folder.
+    std::ifstream in(a.positional[0], std::ios::binary);
+    const std::string dir = fs::path(a.positional[0]).parent_path().string();
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      const auto paths = relpos::specPluginPathsInText(line, dir);
+      for (std::size_t i = 0; i < paths.size(); ++i)
+        items.push_back({paths[i], a.positional[0] + ":" + std::to_string(n) + ": plugins[" +
+                                       std::to_string(i) + "]: "});
+    }
+  }
   for (const auto& spec : specs) {
     const auto paths = relpos::specPluginPaths(spec);
     for (std::size_t i = 0; i < paths.size(); ++i)

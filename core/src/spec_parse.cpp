@@ -552,21 +552,28 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
   return parseSpec(ss.str(), registry, base);
 }
 
-std::vector<std::string> specPluginPaths(const std::string& file) {
+std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir) {
   std::vector<std::string> out;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return out;
-  const json j = json::parse(in, nullptr, false);
+  if (text.find("\"plugins\"") == std::string::npos) return out;  // no need to parse
+  const json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("plugins") || !j["plugins"].is_array())
     return out;
-  const std::string::size_type slash = file.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "" : file.substr(0, slash + 1);
+  const std::string prefix = dir.empty() || dir.back() == '/' ? dir : dir + "/";
   for (const auto& p : j["plugins"])
     if (p.is_string()) {
       const std::string path = p.get<std::string>();
-      out.push_back(!path.empty() && path[0] == '/' ? path : dir + path);
+      out.push_back(!path.empty() && path[0] == '/' ? path : prefix + path);
     }
   return out;
+}
+
+std::vector<std::string> specPluginPaths(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string::size_type slash = file.find_last_of('/');
+  return specPluginPathsInText(ss.str(), slash == std::string::npos ? "" : file.substr(0, slash));
 }
 
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d) {

@@ -507,3 +507,22 @@ TEST(CliBatch, CollisionOptionsApplyToEveryLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliPlugins, BatchLinesLoadTheirPluginLists) {
+  fs::path d = scratchDir();
+  fs::copy_file(std::string(RELPOS_PLUGIN_DIR) + "/relpos-helical.so", d / "relpos-helical.so",
+                fs::copy_options::overwrite_existing);
+  nlohmann::json spec =
+      nlohmann::json::parse(slurp(RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json"));
+  spec["plugins"] = {"relpos-helical.so"};
+  const fs::path file = writeSpec("with-plugins.jsonl", spec.dump() + "\n" + spec.dump() + "\n");
+  CmdResult r = run("batch " + file.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = resultLines(r.out);
+  ASSERT_EQ(lines.size(), 2u);
+  for (const auto& j : lines) EXPECT_EQ(j["status"], "solved") << j;
+}
+
+}  // namespace

@@ -32,6 +32,8 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry);
 // The spec's "plugins" list, each path resolved against the spec's folder: what to load before
 // parsing it. Empty when there is none or the file cannot be read (parseSpecFile reports that).
 std::vector<std::string> specPluginPaths(const std::string& file);
+// The same for a spec given as text (a JSONL line), paths resolved against `dir`.
+std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir);
 
 // "file: path: message" (path omitted when empty).
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
