@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -523,6 +525,28 @@ TEST(CliPlugins, BatchLinesLoadTheirPluginLists) {
   const auto lines = resultLines(r.out);
   ASSERT_EQ(lines.size(), 2u);
   for (const auto& j : lines) EXPECT_EQ(j["status"], "solved") << j;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliCollision, TableCountsCollisionFreeBranches) {
+  CmdResult r = run("table " RELPOS_DATA_DIR "/collision --collision --repeat 3");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("free branches"), std::string::npos) << r.out;
+  // The arm's second solution runs into the block: 1 of its 2 branches is free.
+  std::istringstream in(r.out);
+  std::string line;
+  std::map<std::string, std::string> last_column;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+    if (w.size() == 6) last_column[w[0]] = w[5];
+  }
+  EXPECT_EQ(last_column["arm-either-side"], "1");
+  EXPECT_EQ(last_column["part-on-table-beside-wall"], "1");
+  EXPECT_EQ(last_column["soda-can-grasp-collision"], "2");
 }
 
 }  // namespace
