@@ -75,6 +75,14 @@ nlohmann::ordered_json invalidLine(const std::string& name, const std::string& m
   return j;
 }
 
+// "SOURCE: json.path: what" for every problem, joined by "; ".
+std::string joined(const std::string& source, const std::vector<Diagnostic>& problems) {
+  std::string message;
+  for (const auto& e : problems)
+    message += (message.empty() ? "" : "; ") + formatDiagnostic(source, e);
+  return message;
+}
+
 // An invalid spec's "name" when it has a readable one, else the file's stem or "FILE:LINE".
 std::string specName(const Item& item) {
   std::string text = item.text;
@@ -101,26 +109,20 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
     parsed = parseSpec(item.text, reg, item.name);
   }
   if (!parsed.problem) {
-    std::string message;
-    for (const auto& e : parsed.errors)
-      message += (message.empty() ? "" : "; ") + formatDiagnostic(item.source, e);
     out.name = specName(item);
     out.status = "invalid";
-    out.line = invalidLine(out.name, message).dump();
+    out.line = invalidLine(out.name, joined(item.source, parsed.errors)).dump();
   } else {
     const Problem& pb = *parsed.problem;
     solve(pb, reg, SolverOptions(), ws, sol);
     nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
     std::vector<Diagnostic> errors, warnings;
-    if (a.collision && !collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings)) {
-      std::string message;
-      for (const auto& e : errors)
-        message += (message.empty() ? "" : "; ") + formatDiagnostic(item.source, e);
-      result = invalidLine(pb.name, message);
-    }
+    if (a.collision && !collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings))
+      result = invalidLine(pb.name, joined(item.source, errors));
     out.name = pb.name;
     out.status = result["status"].get<std::string>();
-    for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
+    if (out.status != "invalid")
+      for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
     out.solve_us = sol.solve_us;
     out.line = result.dump();
   }

@@ -119,7 +119,14 @@ bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::P
   int free_branches = 0;
   for (std::size_t b = 0; b < sol.branches.size(); ++b) {
     const relpos::Branch& branch = sol.branches[b];
-    const relpos::NearestPose n = relpos::nearestOnBranch(branch, pb.mobile.pose);
+    // The nearest pose resultToJson already searched for (its parameters are stored as doubles,
+    // so the pose is rebuilt exactly instead of searching again).
+    const auto& near = (*result)["branches"][b]["nearest"];
+    relpos::NearestPose n;
+    for (int i = 0; i < branch.manifold->dof(); ++i)
+      n.parameters[i] = near["parameters"][i].get<double>();
+    n.pose = branch.manifold->pose(n.parameters);
+    n.distance = near["distance"].get<double>();
     const auto c = relpos::collision::filterBranch(*scene, branch, n, pb.mobile.pose, options);
     free_branches += c.has_nearest_free || !c.free_samples.empty();
     (*result)["branches"][b]["collision"] = relpos::collision::collisionToJson(

@@ -59,7 +59,7 @@ std::vector<Vector3d> shrunk(const Mesh& m, double by) {
 
 class CollisionModel {
  public:
-  explicit CollisionModel(const Mesh& m) : mesh_(m) {
+  explicit CollisionModel(const Mesh& m) {
     geometry_ = bvhOf(m.vertices, m.triangles);
     probe_ = m.vertices.front();
     if (m.closed && m.oriented) {
@@ -72,7 +72,6 @@ class CollisionModel {
   const fcl::CollisionGeometryd* geometry() const { return geometry_.get(); }
   // The shrunk solid (nullptr for an open or inconsistently wound mesh).
   const fcl::CollisionGeometryd* shrunkGeometry() const { return shrunk_.get(); }
-  const Mesh& mesh() const { return mesh_; }
   // A point of the solid just inside one of its vertices (the vertex itself for an open mesh):
   // inside another solid exactly when this whole solid is, once the surfaces are known apart,
   // and never on a surface it merely touches.
@@ -82,7 +81,6 @@ class CollisionModel {
   bool inside(const Vector3d& p) const { return inside_ && (*inside_)(p); }
 
  private:
-  Mesh mesh_;
   std::shared_ptr<fcl::CollisionGeometryd> geometry_, shrunk_;
   Vector3d probe_;
   std::unique_ptr<detail::SolidInside> inside_;
@@ -130,10 +128,10 @@ double surfaceDistance(const CollisionModel& a, const Isometry3d& Xa, const Coll
   return std::max(0.0, result.min_distance);
 }
 
-// One vertex of `a` inside the closed mesh `b`: with the surfaces apart, one vertex inside means
+// a's probe point inside the closed mesh b: with the surfaces apart, one point of a inside means
 // all of a is.
-bool verticesInside(const CollisionModel& a, const Isometry3d& Xa, const CollisionModel& b,
-                    const Isometry3d& Xb) {
+bool probeInside(const CollisionModel& a, const Isometry3d& Xa, const CollisionModel& b,
+                 const Isometry3d& Xb) {
   return b.inside((Xb.inverse() * Xa) * a.probe());
 }
 
@@ -163,7 +161,7 @@ bool Scene::collides(const Isometry3d& X_WM, double clearance,
       collides = true;
       // The depth for the report only: enumerating the contacts is the expensive part.
       if (contacts) depth = std::max(deepestContact(m, X_WM, b, o.X_WO), kTouchTolerance);
-    } else if (verticesInside(m, X_WM, b, o.X_WO) || verticesInside(b, o.X_WO, m, X_WM)) {
+    } else if (probeInside(m, X_WM, b, o.X_WO) || probeInside(b, o.X_WO, m, X_WM)) {
       collides = true;  // one solid inside the other: at least this far to get out
       if (contacts) depth = std::max(surfaceDistance(m, X_WM, b, o.X_WO), kTouchTolerance);
     } else if (clearance > 0) {

@@ -34,9 +34,10 @@ struct BranchCollision {
 };
 
 // `nearest` is the branch's nearest pose to `initial` (nearestOnBranch). nearest_free: the
-// nearest pose if free; otherwise the closest free pose among the samples and probes around the
-// nearest parameters, pushed to the collision boundary by bisection towards the nearest pose and
-// refined by a compass search that only steps to free poses.
+// nearest pose if free; otherwise the closest free sample (or, with none free, the closest free
+// probe along each parameter around the nearest parameters), pushed to the collision boundary by
+// bisection towards the nearest pose and, with two or more parameters, refined by a compass
+// search that only steps to free poses.
 BranchCollision filterBranch(const Scene& scene, const Branch& branch, const NearestPose& nearest,
                              const Isometry3d& initial, const FilterOptions& options);
 
