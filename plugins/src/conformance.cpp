@@ -14,8 +14,6 @@ std::string Report::text() const {
   return s;
 }
 
-namespace {
-
 std::string poseText(const Isometry3d& X) {
   std::ostringstream os;
   os.precision(17);
@@ -24,8 +22,6 @@ std::string poseText(const Isometry3d& X) {
      << q.y() << " " << q.z() << " " << q.w() << "]";
   return os.str();
 }
-
-}  // namespace
 
 double fundamentalResidual(const Fundamental& f, const Isometry3d& X, const Registry* registry) {
   if (f.kind == FundamentalKind::kCustom) {

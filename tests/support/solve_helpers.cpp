@@ -17,14 +17,7 @@ Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
   return plugins::sampleParams(m, rng, window);
 }
 
-std::string poseText(const Isometry3d& X) {
-  std::ostringstream os;
-  os.precision(17);
-  Quaterniond q(X.linear());
-  os << "position [" << X.translation().transpose() << "] quaternion xyzw [" << q.x() << " "
-     << q.y() << " " << q.z() << " " << q.w() << "]";
-  return os.str();
-}
+std::string poseText(const Isometry3d& X) { return plugins::poseText(X); }
 
 double worstSampledViolation(const Problem& p, const Solution& s, int n, std::uint64_t seed,
                              std::string* where) {

@@ -24,6 +24,9 @@ struct Report {
 double fundamentalResidual(const Fundamental& f, const Isometry3d& X_WM,
                            const Registry* registry = nullptr);
 
+// A pose as text a failure message can show (and a test can paste back): position, quaternion.
+std::string poseText(const Isometry3d& X);
+
 // Parameters drawn uniformly within the manifold's bounds (unbounded lengths within ±window).
 Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window = 3.0);
 
