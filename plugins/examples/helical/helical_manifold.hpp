@@ -8,14 +8,12 @@
 
 namespace helical_plugin {
 
-class HelicalManifold final : public relpos::ManifoldBase<HelicalManifold> {
+class HelicalManifold final : public relpos::MixedManifoldBase<HelicalManifold> {
  public:
   HelicalManifold(const relpos::Vector3d& p_m, const relpos::Vector3d& u_m,
                   const relpos::Vector3d& q_f, const relpos::Vector3d& d_f, double pitch);
   const char* typeName() const override { return "Helical"; }
   int dof() const override { return 1; }
-  int rotationalDof() const override { return -1; }
-  int translationalDof() const override { return -1; }
   relpos::Parameter parameter(int i) const override;
   relpos::Isometry3d pose(const relpos::Params& theta) const override;
   relpos::Params project(const relpos::Isometry3d& X) const override;

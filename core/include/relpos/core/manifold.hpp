@@ -58,6 +58,15 @@ class ManifoldBase : public Manifold {
   }
 };
 
+// A mixed (non-separable) manifold: its DOF do not split into rotational and translational ones,
+// so the result writes `null` for both (SPEC.md §2).
+template <typename Derived>
+class MixedManifoldBase : public ManifoldBase<Derived> {
+ public:
+  int rotationalDof() const override { return -1; }
+  int translationalDof() const override { return -1; }
+};
+
 inline constexpr std::size_t kManifoldStorage = 1024;
 
 class ManifoldHolder {

@@ -14,13 +14,11 @@
 
 namespace relpos::manifolds {
 
-class LineDistanceManifold final : public ManifoldBase<LineDistanceManifold> {
+class LineDistanceManifold final : public MixedManifoldBase<LineDistanceManifold> {
  public:
   explicit LineDistanceManifold(const Fundamental& f);
   const char* typeName() const override { return "LineDistance"; }
   int dof() const override { return ranged() ? 6 : 5; }
-  int rotationalDof() const override { return -1; }
-  int translationalDof() const override { return -1; }
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;

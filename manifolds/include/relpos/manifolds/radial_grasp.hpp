@@ -23,13 +23,11 @@ struct RadialGraspSpec {
   double sigma = 1.0;                  // approach direction: +1 away from the axis, -1 towards
 };
 
-class RadialGraspManifold final : public ManifoldBase<RadialGraspManifold> {
+class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> {
  public:
   explicit RadialGraspManifold(const RadialGraspSpec& spec);
   const char* typeName() const override { return "RadialGrasp"; }
   int dof() const override;
-  int rotationalDof() const override { return -1; }
-  int translationalDof() const override { return -1; }
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;

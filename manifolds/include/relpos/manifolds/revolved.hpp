@@ -12,7 +12,7 @@
 
 namespace relpos::manifolds {
 
-class RevolvedManifold final : public ManifoldBase<RevolvedManifold> {
+class RevolvedManifold final : public MixedManifoldBase<RevolvedManifold> {
  public:
   // `inner` must have a fixed rotation (RotationKind::kFixed).
   RevolvedManifold(const Vector3d& point, const Vector3d& axis, const SeparableManifold& inner)
@@ -20,8 +20,6 @@ class RevolvedManifold final : public ManifoldBase<RevolvedManifold> {
   static constexpr const char* kTypeName = "Revolved";
   const char* typeName() const override { return kTypeName; }
   int dof() const override { return 1 + inner_.dof(); }
-  int rotationalDof() const override { return -1; }
-  int translationalDof() const override { return -1; }
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
