@@ -249,11 +249,12 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   for (const auto& p : a.plugins) items.push_back({p, ""});
   std::vector<std::string> specs;
   if (cmd == "solve" && a.positional.size() == 1) specs = a.positional;
-  if ((cmd == "table" || (cmd == "rules" && a.coverage)) && !a.positional.empty())
+  const bool batch = cmd == "batch" && a.positional.size() == 1;
+  if ((cmd == "table" || (cmd == "rules" && a.coverage) ||
+       (batch && fs::is_directory(a.positional[0]))) &&
+      !a.positional.empty())
     specs = specFiles(a.positional);
-  if (cmd == "batch" && a.positional.size() == 1 && fs::is_directory(a.positional[0]))
-    specs = specFiles(a.positional);
-  if (cmd == "batch" && a.positional.size() == 1 && fs::is_regular_file(a.positional[0])) {
+  else if (batch && fs::is_regular_file(a.positional[0])) {
     // A JSONL file: each line's list, relative to the file's folder.
     std::ifstream in(a.positional[0], std::ios::binary);
     const std::string dir = fs::path(a.positional[0]).parent_path().string();
