@@ -6,9 +6,7 @@
 //   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include <array>
 #include <cmath>
-#include <map>
 
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/rules/builtin.hpp"
@@ -17,46 +15,6 @@ namespace {
 using relpos::Vector3d;
 using relpos::collision::Mesh;
 
-// A closed box with half-extents h whose faces are n x n grids of squares (12 n² triangles),
-// vertices on the shared edges welded.
-Mesh tessellatedBox(const Vector3d& h, int n) {
-  Mesh m;
-  std::map<std::array<double, 3>, int> index;
-  auto vertex = [&](const Vector3d& p) {
-    auto [it, added] =
-        index.try_emplace({p.x(), p.y(), p.z()}, static_cast<int>(m.vertices.size()));
-    if (added) m.vertices.push_back(p);
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (double side : {-1.0, 1.0}) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      std::vector<int> grid;
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j) {
-          Vector3d p;
-          p[axis] = side * h[axis];
-          p[u] = h[u] * (2.0 * i / n - 1);
-          p[v] = h[v] * (2.0 * j / n - 1);
-          grid.push_back(vertex(p));
-        }
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-          const int a = grid[i * (n + 1) + j], b = grid[i * (n + 1) + j + 1],
-                    c = grid[(i + 1) * (n + 1) + j], d = grid[(i + 1) * (n + 1) + j + 1];
-          if (side > 0) {  // outward: (c − a) × (b − a) points along +axis
-            m.triangles.push_back({a, c, b});
-            m.triangles.push_back({b, c, d});
-          } else {
-            m.triangles.push_back({a, b, c});
-            m.triangles.push_back({b, d, c});
-          }
-        }
-    }
-  relpos::collision::classify(m);
-  return m;
-}
-
 // The part (20 x 10 x 6 cm, bottom face at its frame's z = 0) resting on a table beside a wall:
 // the part an n x n-gridded box (12 n² triangles), table and wall m x m-gridded.
 relpos::collision::Scene partOnTableScene(int n, int m) {
@@ -64,12 +22,12 @@ relpos::collision::Scene partOnTableScene(int n, int m) {
   Isometry3d table = Isometry3d::Identity(), wall = Isometry3d::Identity();
   table.translation() = Vector3d(0, 0, -0.02);
   wall.translation() = Vector3d(0.5, 0, 0.15);
-  Mesh part = tessellatedBox(Vector3d(0.1, 0.05, 0.03), n);
+  Mesh part = collision::boxMesh(Vector3d(0.1, 0.05, 0.03), n);
   for (auto& v : part.vertices) v.z() += 0.03;
   return collision::Scene(
       collision::buildModel(part),
-      {{"table", table, collision::buildModel(tessellatedBox(Vector3d(0.6, 0.4, 0.02), m))},
-       {"wall", wall, collision::buildModel(tessellatedBox(Vector3d(0.02, 0.4, 0.15), m))}});
+      {{"table", table, collision::buildModel(collision::boxMesh(Vector3d(0.6, 0.4, 0.02), m))},
+       {"wall", wall, collision::buildModel(collision::boxMesh(Vector3d(0.02, 0.4, 0.15), m))}});
 }
 
 void BM_CollisionFilteredSolve(benchmark::State& state) {
@@ -189,13 +147,13 @@ void BM_GraspCollisionFilteredSolve(benchmark::State& state) {
   Isometry3d counter = Isometry3d::Identity();
   counter.translation() = Vector3d(0.4, 0.1, -0.02);
   const Mesh gripper =
-      merged({moved(tessellatedBox(Vector3d(0.06, 0.06, 0.03), 20), {0, 0, 0.03}),
-              moved(tessellatedBox(Vector3d(0.01, 0.005, 0.04), 14), {0, 0.05, 0.1}),
-              moved(tessellatedBox(Vector3d(0.01, 0.005, 0.04), 14), {0, -0.05, 0.1})});
+      merged({moved(collision::boxMesh(Vector3d(0.06, 0.06, 0.03), 20), {0, 0, 0.03}),
+              moved(collision::boxMesh(Vector3d(0.01, 0.005, 0.04), 14), {0, 0.05, 0.1}),
+              moved(collision::boxMesh(Vector3d(0.01, 0.005, 0.04), 14), {0, -0.05, 0.1})});
   const collision::Scene scene(
       collision::buildModel(gripper),
       {{"can", p.fixed.pose, collision::buildModel(cylinderMesh(0.033, 0.0, 0.12, 100, 50))},
-       {"counter", counter, collision::buildModel(tessellatedBox(Vector3d(0.3, 0.3, 0.02), 29))}});
+       {"counter", counter, collision::buildModel(collision::boxMesh(Vector3d(0.3, 0.3, 0.02), 29))}});
   Workspace ws;
   Solution s;
   collision::FilterOptions opt;

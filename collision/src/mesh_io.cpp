@@ -112,13 +112,40 @@ bool writeOff(const std::string& path, const Mesh& mesh) {
   return static_cast<bool>(out);
 }
 
-Mesh boxMesh(const Vector3d& h) {
+Mesh boxMesh(const Vector3d& h, int n) {
   Mesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z());
-  // Two outward triangles per face.
-  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  std::map<std::array<double, 3>, int> index;  // welds the vertices of shared edges
+  auto vertex = [&](const Vector3d& p) {
+    auto [it, added] =
+        index.try_emplace({p.x(), p.y(), p.z()}, static_cast<int>(m.vertices.size()));
+    if (added) m.vertices.push_back(p);
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-1.0, 1.0}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::vector<int> grid;
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+          Vector3d p;
+          p[axis] = side * h[axis];
+          p[u] = h[u] * (2.0 * i / n - 1);
+          p[v] = h[v] * (2.0 * j / n - 1);
+          grid.push_back(vertex(p));
+        }
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const int a = grid[i * (n + 1) + j], b = grid[i * (n + 1) + j + 1],
+                    c = grid[(i + 1) * (n + 1) + j], d = grid[(i + 1) * (n + 1) + j + 1];
+          if (side > 0) {  // outward: (c − a) × (b − a) points along +axis
+            m.triangles.push_back({a, c, b});
+            m.triangles.push_back({b, c, d});
+          } else {
+            m.triangles.push_back({a, b, c});
+            m.triangles.push_back({b, d, c});
+          }
+        }
+    }
   classify(m);
   return m;
 }

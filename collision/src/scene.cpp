@@ -9,6 +9,9 @@
 // one penetrates by more than kTouchTolerance — a yes/no FCL query that stops at the first hit,
 // where enumerating every touching triangle pair of two resting 10k-triangle meshes would cost
 // milliseconds.
+//
+// Before any of that, the convex hulls of the meshes' pieces decide most poses exactly and for a
+// few dot products (convex_pieces.hpp); FCL sees only what they leave undecided.
 #include "relpos/collision/scene.hpp"
 
 #include <fcl/fcl.h>
@@ -16,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "convex_pieces.hpp"
 #include "solid_inside.hpp"
 
 namespace relpos::collision {
@@ -68,6 +72,7 @@ class CollisionModel {
       probe_ = inner.front();
     }
     if (m.closed) inside_ = std::make_unique<detail::SolidInside>(m);
+    pieces_ = detail::convexPieces(m);
   }
   const fcl::CollisionGeometryd* geometry() const { return geometry_.get(); }
   // The shrunk solid (nullptr for an open or inconsistently wound mesh).
@@ -79,11 +84,14 @@ class CollisionModel {
 
   // Whether point p (this mesh's frame) is inside the closed mesh (never for an open one).
   bool inside(const Vector3d& p) const { return inside_ && (*inside_)(p); }
+  // The mesh's connected pieces as convex hulls (empty: every verdict goes to FCL).
+  const std::vector<detail::ConvexPiece>& pieces() const { return pieces_; }
 
  private:
   std::shared_ptr<fcl::CollisionGeometryd> geometry_, shrunk_;
   Vector3d probe_;
   std::unique_ptr<detail::SolidInside> inside_;
+  std::vector<detail::ConvexPiece> pieces_;
 };
 
 ModelPtr buildModel(const Mesh& mesh) { return std::make_shared<const CollisionModel>(mesh); }
@@ -157,7 +165,13 @@ bool Scene::collides(const Isometry3d& X_WM, double clearance,
     const CollisionModel& b = *o.model;
     double depth = 0.0;
     bool collides = false;
-    if (surfacesMeet(m, X_WM, b, o.X_WO)) {
+    const detail::PiecesVerdict hulls =
+        detail::piecesVerdict(m.pieces(), X_WM, b.pieces(), o.X_WO, clearance, contacts);
+    if (hulls.kind == detail::PiecesVerdict::kFree) continue;
+    if (hulls.kind == detail::PiecesVerdict::kCollides) {
+      collides = true;  // two convex solids: the depth is exact
+      depth = hulls.depth;
+    } else if (surfacesMeet(m, X_WM, b, o.X_WO)) {
       collides = true;
       // The depth for the report only: enumerating the contacts is the expensive part.
       if (contacts) depth = std::max(deepestContact(m, X_WM, b, o.X_WO), kTouchTolerance);

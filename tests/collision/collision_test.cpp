@@ -66,6 +66,132 @@ TEST(CollisionOracle, BoxesAgreeWithTheSeparatingAxisTest) {
   EXPECT_GT(free, 100);
 }
 
+// Oracle depths near touching and near the touching tolerance, either side: where a shortcut
+// that is almost right would show.
+constexpr double kNearTouching[] = {-1e-3, -1e-5, -1e-7, 1e-7, 0.97e-6, 1.03e-6, 1e-5, 1e-3, 0.05};
+
+// Moves b from a's centre along `dir` to where the oracle's depth is `target` (bisection).
+void placeAtDepth(const Box& a, Box* b, const Vector3d& dir, double target) {
+  double in = 0.0, out = 4.0 * (a.h.norm() + b->h.norm());
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (in + out);
+    b->X.translation() = a.X.translation() + mid * dir;
+    (boxPenetration(a, *b) > target ? in : out) = mid;
+  }
+  b->X.translation() = a.X.translation() + in * dir;
+}
+
+// The same pairs with finely tessellated boxes (the hull path must see through the grid points),
+// and the reported depth is the oracle's penetration depth (exact for two convex solids).
+TEST(CollisionOracle, TessellatedBoxesAgreeAndReportTheExactDepth) {
+  Rng rng(63);
+  int collide = 0, free = 0, near_tolerance = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Box a{rng.pose(k % 3 == 0),
+                Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
+    Box b{rng.pose(k % 3 == 0),
+          Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
+    placeAtDepth(a, &b, rng.unit(), kNearTouching[k % std::size(kNearTouching)]);
+    const Scene scene(buildModel(boxMesh(b.h, 1 + k % 7)),
+                      {SceneObject{"obstacle", a.X, buildModel(boxMesh(a.h, 1 + k % 5))}});
+    const double depth = boxPenetration(a, b);
+    SCOPED_TRACE("pair #" + std::to_string(k) + " oracle depth " + std::to_string(depth));
+    std::vector<collision::Contact> contacts;
+    const bool reported = scene.collides(b.X, 0.0);
+    EXPECT_EQ(scene.collides(b.X, 0.0, &contacts), reported) << "verdict depends on the contacts";
+    // Two convex solids: the verdict is exact up to rounding, touching tolerance included.
+    if (depth > collision::kTouchTolerance + 1e-9) {
+      EXPECT_TRUE(reported) << "reported free, the oracle finds them interpenetrating";
+      ASSERT_EQ(contacts.size(), 1u);
+      EXPECT_NEAR(contacts[0].depth, depth, 1e-9 * (1 + depth));
+      ++collide;
+    } else if (depth < collision::kTouchTolerance - 1e-9) {
+      EXPECT_FALSE(reported) << "reported colliding, the oracle finds them touching or apart";
+      ++free;
+    }
+    near_tolerance += std::abs(depth - collision::kTouchTolerance) < 2e-7;
+  }
+  EXPECT_GT(collide, 100);
+  EXPECT_GT(free, 100);
+  EXPECT_GT(near_tolerance, 50);
+}
+
+// A closed prism over a polygon star-shaped from its first vertex (fan-triangulated caps), wound
+// outward for a counter-clockwise polygon.
+collision::Mesh prismMesh(const std::vector<Eigen::Vector2d>& polygon, double z0, double z1) {
+  collision::Mesh m;
+  const int n = static_cast<int>(polygon.size());
+  for (double z : {z0, z1})
+    for (const auto& p : polygon) m.vertices.emplace_back(p.x(), p.y(), z);
+  for (int i = 1; i + 1 < n; ++i) {
+    m.triangles.push_back({0, i + 1, i});          // bottom, facing −z
+    m.triangles.push_back({n, n + i, n + i + 1});  // top, facing +z
+  }
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    m.triangles.push_back({i, j, n + j});
+    m.triangles.push_back({i, n + j, n + i});
+  }
+  collision::classify(m);
+  return m;
+}
+
+collision::Mesh twoBoxes(const Box& p, const Box& q) {
+  collision::Mesh m = boxMesh(p.h, 2), second = boxMesh(q.h, 3);
+  for (auto& v : m.vertices) v = p.X * v;
+  const int base = static_cast<int>(m.vertices.size());
+  for (const auto& v : second.vertices) m.vertices.push_back(q.X * v);
+  for (const auto& t : second.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  collision::classify(m);
+  return m;
+}
+
+// Meshes that are not one convex solid, against the oracle on their parts: an L-shaped prism
+// (non-convex: its hull proves poses free, FCL decides the rest) and a mesh of two separate boxes
+// (two pieces). Each is the union of two boxes B1, B2: it collides when either does (beyond
+// touching) and is free when both are apart.
+TEST(CollisionOracle, NonConvexAndTwoPieceMeshesAgreeWithTheirParts) {
+  // The L: [0, 0.2] x [0, 0.1] plus [0, 0.1] x [0.1, 0.2], 0.06 high.
+  const Box b1{Isometry3d(Eigen::Translation3d(0.1, 0.05, 0.03)), Vector3d(0.1, 0.05, 0.03)};
+  const Box b2{Isometry3d(Eigen::Translation3d(0.05, 0.15, 0.03)), Vector3d(0.05, 0.05, 0.03)};
+  const collision::Mesh ell = prismMesh(
+      {{0, 0}, {0.2, 0}, {0.2, 0.1}, {0.1, 0.1}, {0.1, 0.2}, {0, 0.2}}, 0.0, 0.06);
+  ASSERT_TRUE(ell.closed && ell.oriented);
+  // Two boxes apart: the L's parts pulled 5 cm apart along y.
+  Box far2 = b2;
+  far2.X.translation().y() += 0.05;
+  const collision::Mesh pair = twoBoxes(b1, far2);
+  Rng rng(64);
+  for (const bool l_shape : {true, false}) {
+    const Box parts[2] = {b1, l_shape ? b2 : far2};
+    int collide = 0, free = 0;
+    for (int k = 0; k < 300; ++k) {
+      const Box obstacle{rng.pose(k % 3 == 0), Vector3d(rng.uniform(0.02, 0.15),
+                                                        rng.uniform(0.02, 0.15),
+                                                        rng.uniform(0.02, 0.15))};
+      Isometry3d X = rng.pose(k % 4 == 0);
+      X.translation() = obstacle.X.translation() + rng.unit() * rng.uniform(0.0, 0.3);
+      const Scene scene(buildModel(l_shape ? ell : pair),
+                        {SceneObject{"obstacle", obstacle.X, buildModel(boxMesh(obstacle.h, 2))}});
+      double deepest = -std::numeric_limits<double>::infinity();
+      for (const Box& part : parts)
+        deepest = std::max(deepest, boxPenetration(obstacle, Box{X * part.X, part.h}));
+      SCOPED_TRACE(std::string(l_shape ? "L" : "two boxes") + " #" + std::to_string(k) +
+                   " deepest part " + std::to_string(deepest));
+      const bool reported = scene.collides(X, 0.0);
+      if (deepest > collision::kTouchTolerance + 1e-9) {
+        EXPECT_TRUE(reported) << "reported free, a part interpenetrates";
+        ++collide;
+      } else if (deepest < -1e-9) {
+        EXPECT_FALSE(reported) << "reported colliding, both parts are apart";
+        ++free;
+      }
+    }
+    EXPECT_GT(collide, 50);
+    EXPECT_GT(free, 50);
+  }
+}
+
 TEST(CollisionOracle, SpheresAgreeBeyondTheirTessellation) {
   Rng rng(62);
   const double r = 0.2;

@@ -32,8 +32,10 @@ bool readMesh(const std::string& path, Mesh* mesh, std::string* error,
 // Writes an OFF file (the bundled example meshes are written by tools/make_meshes).
 bool writeOff(const std::string& path, const Mesh& mesh);
 
-// A closed axis-aligned box centred at the origin with half-extents h (12 triangles, outward).
-Mesh boxMesh(const Vector3d& h);
+// A closed axis-aligned box centred at the origin with half-extents h, wound outward, its faces
+// n × n grids of squares (12 n² triangles; n = 29 gives the ~10k-triangle meshes the benchmarks
+// use), the vertices of shared edges welded.
+Mesh boxMesh(const Vector3d& h, int n = 1);
 // A closed sphere of radius r centred at the origin: an icosahedron subdivided `levels` times,
 // its vertices on the sphere (an inscribed polyhedron).
 Mesh sphereMesh(double r, int levels);
