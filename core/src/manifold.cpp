@@ -26,27 +26,60 @@ double clampParam(const Parameter& p, double v) {
 
 namespace {
 
-// Compass search on poseDistance from `start`: deterministic, derivative free, monotone.
-Params compassSearch(const Manifold& m, const Isometry3d& X, const Parameter* par, Params best,
-                     double* best_d) {
+// The pose distance at t once its closed-form parameters are projected (written into t).
+double distanceWithTail(const Manifold& m, const Isometry3d& X, Params* t) {
+  if (m.closedFormParams() != 0u) m.projectTail(X, t);
+  return poseDistance(m.pose(*t), X);
+}
+
+// Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
+// deterministic, derivative free, monotone. A sweep tries ± step along each parameter; after a
+// sweep that improved, the move just made is tried again from the new point (the pattern move),
+// which walks a valley in a few evaluations where plain compass steps would zig-zag.
+Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* par, Params best,
+                     double* best_d, double* step, double min_step) {
   const int n = m.dof();
-  double step = 0.25;
-  for (int iter = 0; iter < 200 && step > 1e-8; ++iter) {
-    bool improved = false;
+  const unsigned fixed = m.closedFormParams();
+  auto eval = [&](Params& t) { return distanceWithTail(m, X, &t); };
+  auto sweep = [&](Params base, double* d) {
     for (int i = 0; i < n; ++i) {
+      if (fixed & (1u << i)) continue;
       for (double sgn : {1.0, -1.0}) {
-        Params t = best;
-        double s = par[i].kind == ParamKind::kLength ? step * (1.0 + std::abs(best[i])) : step;
+        Params t = base;
+        const double s =
+            par[i].kind == ParamKind::kLength ? *step * (1.0 + std::abs(base[i])) : *step;
         t[i] = clampParam(par[i], t[i] + sgn * s);
-        double d = poseDistance(m.pose(t), X);
-        if (d < *best_d - 1e-15) {
-          *best_d = d;
-          best = t;
-          improved = true;
+        const double dt = eval(t);
+        if (dt < *d - 1e-15) {
+          *d = dt;
+          base = t;
+          break;
         }
       }
     }
-    if (!improved) step *= 0.5;
+    return base;
+  };
+  for (int iter = 0; iter < 400 && *step > min_step; ++iter) {
+    double d = *best_d;
+    const Params moved = sweep(best, &d);
+    if (!(d < *best_d)) {
+      *step *= 0.5;
+      continue;
+    }
+    // Pattern move: keep going the way the sweep went while it pays.
+    Params base = best;
+    best = moved;
+    *best_d = d;
+    for (int k = 0; k < 8; ++k) {
+      Params p = best;
+      for (int i = 0; i < n; ++i) p[i] = clampParam(par[i], 2 * best[i] - base[i]);
+      double dp = eval(p);
+      if (!(dp < *best_d - 1e-15)) break;
+      const Params q = sweep(p, &dp);
+      base = best;
+      best = q;
+      *best_d = dp;
+    }
   }
   return best;
 }
@@ -57,15 +90,18 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // The projection is exact for poses on the manifold and usually the right basin elsewhere; a
   // coarse grid over the angle parameters catches the other basins of the combined metric
   // (translation + rotation), and a compass search refines the two best starts.
+  // Parameters with a closed form given the others (closedFormParams()) are not searched.
   const int n = m.dof();
+  const unsigned fixed = m.closedFormParams();
   Params proj = m.project(X);
-  double proj_d = poseDistance(m.pose(proj), X);
-  if (n == 0 || proj_d == 0.0) return proj;
+  double proj_d = distanceWithTail(m, X, &proj);
+  if (fixed == (1u << n) - 1u || proj_d == 0.0) return proj;
   Parameter par[kMaxDof];
   int angles[kMaxDof], n_angles = 0;
   for (int i = 0; i < n; ++i) {
     par[i] = m.parameter(i);
-    if (par[i].kind == ParamKind::kAngle && n_angles < 3) angles[n_angles++] = i;
+    if (par[i].kind == ParamKind::kAngle && n_angles < 3 && !(fixed & (1u << i)))
+      angles[n_angles++] = i;
   }
   constexpr int kGrid = 4;
   Params grid_best = proj;
@@ -82,15 +118,19 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
       t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % kGrid) / kGrid
                            : p.min + (p.max - p.min) * (code % kGrid) / (kGrid - 1);
     }
-    const double d = poseDistance(m.pose(t), X);
+    const double d = distanceWithTail(m, X, &t);
     if (d < grid_d) grid_d = d, grid_best = t;
   }
-  Params best = compassSearch(m, X, par, proj, &proj_d);
-  double best_d = proj_d;
+  // Both starts to a coarse step, then the better one to the end.
+  constexpr double kCoarse = 1e-3, kFine = 1e-8;
+  double proj_step = 0.25, grid_step = 0.25;
+  Params best = patternSearch(m, X, par, proj, &proj_d, &proj_step, kCoarse);
+  double best_d = proj_d, best_step = proj_step;
   if (combos > 1) {
-    Params other = compassSearch(m, X, par, grid_best, &grid_d);
-    if (grid_d < best_d - 1e-12) best = other, best_d = grid_d;
+    Params other = patternSearch(m, X, par, grid_best, &grid_d, &grid_step, kCoarse);
+    if (grid_d < best_d - 1e-12) best = other, best_d = grid_d, best_step = grid_step;
   }
+  best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;

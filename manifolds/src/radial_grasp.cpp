@@ -80,6 +80,26 @@ Params RadialGraspManifold::project(const Isometry3d& X) const {
   return th;
 }
 
+unsigned RadialGraspManifold::closedFormParams() const {
+  const int lengths = (hFree() ? 1 : 0) + (rRanged() ? 1 : 0);
+  return ((1u << lengths) - 1u) << 1;  // the parameters between ψ and θ
+}
+
+void RadialGraspManifold::projectTail(const Isometry3d& X, Params* th) const {
+  Params& t = *th;
+  const int k_theta = dof() - 1;
+  // X's origin in the frame F·Rz(ψ), less the part that turns with θ: what (r, 0, z) must match.
+  const Isometry3d inner = A_ * rot(2, t[k_theta]) * L_inv_;
+  const Vector3d p = (F_ * rot(2, t[0])).inverse() * X.translation() - inner.translation();
+  int k = 1;
+  if (hFree()) {
+    double h = planeValueOf(p.z());
+    if (s_.has_height) h = std::min(s_.h_hi, std::max(s_.h_lo, h));
+    t[k++] = h;
+  }
+  if (rRanged()) t[k] = std::min(s_.r_hi, std::max(s_.r_lo, p.x()));
+}
+
 std::string RadialGraspManifold::describe() const {
   return std::string("mixed RadialGrasp (approach ") + (s_.sigma > 0 ? "away from" : "towards") +
          " the axis)";

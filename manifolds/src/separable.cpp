@@ -23,6 +23,11 @@ Params SeparableManifold::project(const Isometry3d& X) const {
   return theta;
 }
 
+void SeparableManifold::projectTail(const Isometry3d& X, Params* theta) const {
+  const Matrix3d R = rot_.rotation(theta->data());
+  trans_.project(R, X.translation(), theta->data() + rot_.dof());
+}
+
 std::string SeparableManifold::describe() const {
   return std::string("rotation ") + toString(rot_.kind) + ", translation " + toString(trans_.kind);
 }

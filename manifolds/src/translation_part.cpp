@@ -244,6 +244,32 @@ int TranslationPart::rangedPlanes() const {
   return n;
 }
 
+bool TranslationPart::projectsExactly() const {
+  switch (kind) {
+    case TranslationKind::kEllipse:
+      return false;
+    case TranslationKind::kPlanes: {
+      // Clamping each ranged height is the nearest point when the rows are orthogonal, which
+      // holds for every R when all of them turn together (one side) or none do.
+      if (rangedPlanes() == 0) return true;
+      for (const Fundamental& f : linear)
+        if (f.point_side != linear[0].point_side) return false;
+      const PlaneRows rows = planeRowsFor(linear, Matrix3d::Identity());
+      for (int i = 0; i < rows.k; ++i)
+        for (int j = 0; j < i; ++j)
+          if (std::abs(rows.n[i].dot(rows.n[j])) > 1e-12) return false;
+      return true;
+    }
+    case TranslationKind::kBoundedCylinder: {
+      // Square cuts only; line and plane are on the same object, so this holds for every R.
+      const Matrix3d I = Matrix3d::Identity();
+      return shapeOf(c1, I).d.cross(shapeOf(c2, I).d).norm() < 1e-12;
+    }
+    default:
+      return true;
+  }
+}
+
 Parameter TranslationPart::rangeParameter() const {
   return Parameter{"distance", ParamKind::kLength, c1.lo, c1.hi, false};
 }

@@ -45,6 +45,16 @@ class Manifold {
   // Placement copy into raw storage (used by ManifoldHolder).
   virtual Manifold* copyInto(void* storage) const = 0;
 
+  // The nearest-pose search in fewer dimensions: once the other parameters are fixed, the ones in
+  // closedFormParams() (bit i: parameter i) are set by projectTail to those nearest X in closed
+  // form (a separable branch's translation, once its rotation is fixed). Only when that
+  // projection is the exact nearest point; otherwise (the default) every parameter is searched.
+  virtual unsigned closedFormParams() const { return 0u; }
+  virtual void projectTail(const Isometry3d& X, Params* theta) const {
+    (void)X;
+    (void)theta;
+  }
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };

@@ -19,6 +19,11 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
+  // The translation parameters, when its projection is exact.
+  unsigned closedFormParams() const override {
+    return trans_.projectsExactly() ? ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u) : 0u;
+  }
+  void projectTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   const RotationPart& rotation() const { return rot_; }
   const TranslationPart& translation() const { return trans_; }

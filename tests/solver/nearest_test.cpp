@@ -1,0 +1,83 @@
+// The nearest pose of a branch (SPEC.md §2 `nearest`) on the bundled generated grasp and weld
+// specs, which cover every manifold the batch produces (separable with and without closed-form
+// translations, both radial grasps): no sampled pose of the branch is nearer, and the parameters
+// set in closed form during the search (Manifold::closedFormParams) are the nearest given the
+// others.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "relpos/core/solver.hpp"
+#include "relpos/core/spec_io.hpp"
+#include "relpos/rules/builtin.hpp"
+#include "test_config.hpp"
+
+namespace relpos::test {
+namespace {
+
+std::vector<Problem> generatedProblems() {
+  std::vector<Problem> v;
+  std::ifstream in(RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl");
+  for (std::string line; std::getline(in, line);) {
+    ParseResult r = parseSpec(line, builtinRegistry());
+    if (r.problem) v.push_back(*r.problem);
+  }
+  return v;
+}
+
+TEST(Nearest, NoSampledPoseOfABranchIsNearer) {
+  std::mt19937_64 rng(71);
+  int branches = 0, with_closed_form = 0;
+  for (const Problem& p : generatedProblems()) {
+    const Solution s = solve(p, builtinRegistry());
+    for (const Branch& b : s.branches) {
+      const NearestPose n = nearestOnBranch(b, p.mobile.pose);
+      ++branches;
+      with_closed_form += b.manifold->closedFormParams() != 0u;
+      for (int k = 0; k < 400; ++k) {
+        const Params t = sampleParameters(*b.manifold, n.parameters, 0.05, rng);
+        ASSERT_GE(poseDistance(b.manifold->pose(t), p.mobile.pose), n.distance - 1e-9)
+            << p.name << " branch " << b.manifold->describe();
+      }
+    }
+  }
+  EXPECT_GT(branches, 100);
+  EXPECT_GT(with_closed_form, 50);
+}
+
+TEST(Nearest, ClosedFormParametersAreTheNearestGivenTheOthers) {
+  std::mt19937_64 rng(72);
+  int checked = 0;
+  for (const Problem& p : generatedProblems()) {
+    const Solution s = solve(p, builtinRegistry());
+    for (const Branch& b : s.branches) {
+      const Manifold& m = *b.manifold;
+      const unsigned closed = m.closedFormParams();
+      if (closed == 0u) continue;
+      for (int k = 0; k < 20; ++k) {
+        Params t = sampleParameters(m, m.project(p.mobile.pose), 0.2, rng);
+        m.projectTail(p.mobile.pose, &t);
+        const double d = poseDistance(m.pose(t), p.mobile.pose);
+        // Moving any closed-form parameter (within its bounds) never brings the pose nearer.
+        for (int i = 0; i < m.dof(); ++i) {
+          if (!(closed & (1u << i))) continue;
+          const Parameter par = m.parameter(i);
+          for (double step : {-1e-2, -1e-4, 1e-4, 1e-2}) {
+            Params u = t;
+            u[i] = std::min(par.max, std::max(par.min, u[i] + step));
+            EXPECT_GE(poseDistance(m.pose(u), p.mobile.pose), d - 1e-12)
+                << p.name << " " << m.describe() << " parameter " << par.name;
+          }
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+}  // namespace
+}  // namespace relpos::test
