@@ -28,16 +28,20 @@ Scene boxScene(const Vector3d& mobile_h, const Box& obstacle) {
                {SceneObject{"obstacle", obstacle.X, buildModel(boxMesh(obstacle.h))}});
 }
 
+// A box of 5 cm to 0.5 m half-extents at a random pose (axis-aligned: exactly parallel edges).
+Box randomBox(Rng& rng, bool axis_aligned) {
+  const Isometry3d X = rng.pose(axis_aligned);
+  return Box{X, Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
+}
+
 // Random box pairs, many overlapping a little, many apart a little, some touching exactly.
 TEST(CollisionOracle, BoxesAgreeWithTheSeparatingAxisTest) {
   Rng rng(61);
   int collide = 0, free = 0, touching = 0;
   for (int k = 0; k < 600; ++k) {
-    const Box a{rng.pose(k % 3 == 0),
-                Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
-    Box b{rng.pose(k % 3 == 0),
-          Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
-    // Slide b along a random direction until the oracle's depth is near a target.
+    const Box a = randomBox(rng, k % 3 == 0);
+    Box b = randomBox(rng, k % 3 == 0);
+    // b's centre a random distance from a's along a random direction.
     b.X.translation() = a.X.translation() + rng.unit() * rng.uniform(0.0, 1.2);
     const Scene scene = boxScene(b.h, a);
     const double depth = boxPenetration(a, b);
@@ -87,10 +91,8 @@ TEST(CollisionOracle, TessellatedBoxesAgreeAndReportTheExactDepth) {
   Rng rng(63);
   int collide = 0, free = 0, near_tolerance = 0;
   for (int k = 0; k < 300; ++k) {
-    const Box a{rng.pose(k % 3 == 0),
-                Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
-    Box b{rng.pose(k % 3 == 0),
-          Vector3d(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5))};
+    const Box a = randomBox(rng, k % 3 == 0);
+    Box b = randomBox(rng, k % 3 == 0);
     placeAtDepth(a, &b, rng.unit(), kNearTouching[k % std::size(kNearTouching)]);
     const Scene scene(buildModel(boxMesh(b.h, 1 + k % 7)),
                       {SceneObject{"obstacle", a.X, buildModel(boxMesh(a.h, 1 + k % 5))}});
