@@ -89,7 +89,7 @@ Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* pa
 Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // The projection is exact for poses on the manifold and usually the right basin elsewhere; a
   // coarse grid over the angle parameters catches the other basins of the combined metric
-  // (translation + rotation), and a compass search refines the two best starts.
+  // (translation + rotation), and a pattern search refines the two best starts.
   // Parameters with a closed form given the others (closedFormParams()) are not searched.
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();

@@ -22,8 +22,9 @@
 
 namespace relpos {
 
-// Bumped whenever a type a plugin shares with relpos changes incompatibly.
-inline constexpr long kPluginAbiVersion = 1;
+// Bumped whenever a type a plugin shares with relpos changes incompatibly (2: Manifold gained
+// the virtual closedFormParams/projectTail, which moves every later vtable slot).
+inline constexpr long kPluginAbiVersion = 2;
 
 // The version with a fingerprint of the shared layouts folded in, so a plugin built against other
 // headers is refused even when the version number was not bumped.
