@@ -218,7 +218,10 @@ Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
   // fixed-size matrices so evaluating a pose never allocates.
   Vector3d T = Vector3d::Zero();
   if (rows.k == 3) {
-    T = N.partialPivLu().solve(h);
+    // Cramer's rule in cross products: the rows are independent (the matcher checked).
+    const Vector3d c12 = rows.n[1].cross(rows.n[2]), c20 = rows.n[2].cross(rows.n[0]),
+                   c01 = rows.n[0].cross(rows.n[1]);
+    T = (h[0] * c12 + h[1] * c20 + h[2] * c01) / rows.n[0].dot(c12);
   } else if (rows.k == 2) {
     const Eigen::Matrix<double, 2, 3> N2 = N.topRows<2>();
     const Eigen::Matrix2d G = N2 * N2.transpose();
