@@ -12,6 +12,7 @@
 #include "evaluator.hpp"
 #include "expected_results.hpp"
 #include "random_problems.hpp"
+#include "relpos/core/plugin_api.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "relpos/plugins/loader.hpp"
@@ -233,7 +234,8 @@ TEST(BadPlugins, ALibraryWithoutTheEntryPoint) {
 }
 
 TEST(BadPlugins, AWrongAbiVersion) {
-  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so", "built for relpos plugin ABI 2.");
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so",
+                "built for relpos plugin ABI " + std::to_string(kPluginAbiVersion + 1) + ".");
 }
 
 TEST(BadPlugins, APluginThatThrowsWhileRegistering) {

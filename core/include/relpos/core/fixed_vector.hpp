@@ -2,9 +2,14 @@
 // A vector with inline, fixed capacity: the solve path keeps its constraint sets in these so a
 // solve never touches the heap. push_back beyond capacity is refused (returns false) so callers
 // can turn overflow into an `unhandled` answer instead of a crash.
-#include <array>
+//
+// The slots are raw storage: an empty vector costs nothing to create, and copying one copies its
+// elements only, not its capacity (a constraint set holds 48 fundamentals' worth of slots and is
+// copied on every branch; copying the whole capacity was a fifth of a solve).
 #include <cassert>
 #include <cstddef>
+#include <new>
+#include <type_traits>
 
 namespace relpos {
 
@@ -12,35 +17,60 @@ template <typename T, std::size_t N>
 class FixedVector {
  public:
   static constexpr std::size_t kCapacity = N;
+  FixedVector() = default;
+  FixedVector(const FixedVector& o) { copyFrom(o); }
+  FixedVector& operator=(const FixedVector& o) {
+    if (this != &o) {
+      clear();
+      copyFrom(o);
+    }
+    return *this;
+  }
+  ~FixedVector() { clear(); }
+
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   bool full() const { return size_ == N; }
-  void clear() { size_ = 0; }
+  void clear() {
+    if constexpr (!std::is_trivially_destructible_v<T>)
+      for (std::size_t i = 0; i < size_; ++i) slot(i)->~T();
+    size_ = 0;
+  }
   bool push_back(const T& v) {
     if (size_ == N) return false;
-    data_[size_++] = v;
+    new (slot(size_)) T(v);
+    ++size_;
     return true;
   }
   void erase(std::size_t i) {
     assert(i < size_);
-    for (std::size_t k = i + 1; k < size_; ++k) data_[k - 1] = data_[k];
+    for (std::size_t k = i + 1; k < size_; ++k) *slot(k - 1) = *slot(k);
+    slot(size_ - 1)->~T();
     --size_;
   }
   T& operator[](std::size_t i) {
     assert(i < size_);
-    return data_[i];
+    return *slot(i);
   }
   const T& operator[](std::size_t i) const {
     assert(i < size_);
-    return data_[i];
+    return *slot(i);
   }
-  T* begin() { return data_.data(); }
-  T* end() { return data_.data() + size_; }
-  const T* begin() const { return data_.data(); }
-  const T* end() const { return data_.data() + size_; }
+  T* begin() { return slot(0); }
+  T* end() { return slot(size_); }
+  const T* begin() const { return slot(0); }
+  const T* end() const { return slot(size_); }
 
  private:
-  std::array<T, N> data_{};
+  void copyFrom(const FixedVector& o) {
+    for (std::size_t i = 0; i < o.size_; ++i) new (slot(i)) T(*o.slot(i));
+    size_ = o.size_;
+  }
+  T* slot(std::size_t i) { return std::launder(reinterpret_cast<T*>(storage_)) + i; }
+  const T* slot(std::size_t i) const {
+    return std::launder(reinterpret_cast<const T*>(storage_)) + i;
+  }
+  alignas(T) unsigned char storage_[N * sizeof(T)];
   std::size_t size_ = 0;
 };
 
