@@ -115,16 +115,22 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
   } else {
     const Problem& pb = *parsed.problem;
     solve(pb, reg, SolverOptions(), ws, sol);
-    nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
-    std::vector<Diagnostic> errors, warnings;
-    if (a.collision && !collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings))
-      result = invalidLine(pb.name, joined(item.source, errors));
     out.name = pb.name;
-    out.status = result["status"].get<std::string>();
+    out.status = toString(sol.status);
+    if (!a.collision) {
+      writeResultLine(pb, sol, a.result, out.line);  // no JSON tree: the common, fast case
+    } else {
+      nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
+      std::vector<Diagnostic> errors, warnings;
+      if (!collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings)) {
+        result = invalidLine(pb.name, joined(item.source, errors));
+        out.status = "invalid";
+      }
+      out.line = result.dump();
+    }
     if (out.status != "invalid")
       for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
     out.solve_us = sol.solve_us;
-    out.line = result.dump();
   }
   out.total_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   return out;

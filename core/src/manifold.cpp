@@ -186,7 +186,9 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   }
   bool converged = false;
   best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged);
-  if (converged) best_step = std::min(best_step, 1e-5);
+  // A converged Newton step leaves an error of about its length squared (< 1e-8): the pattern
+  // search only has to confirm it.
+  if (converged) best_step = std::min(best_step, 1e-7);
   best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);

@@ -1,4 +1,7 @@
-// The result document (SPEC.md §2).
+// The result document (SPEC.md §2), written straight to text: a batch writes one per spec, and
+// building a JSON tree only to print it cost more than solving and parsing together. The text is
+// what nlohmann's dump() prints for the same document (same field order, number format and
+// escaping; result_line_test checks it byte for byte), so resultToJson is simply its parse.
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -15,6 +18,96 @@ using json = nlohmann::ordered_json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+class Writer {
+ public:
+  explicit Writer(std::string& out) : out_(out) {}
+  void raw(const char* s) { out_ += s; }
+  void key(const char* k) {
+    out_ += '"';
+    out_ += k;
+    out_ += "\":";
+  }
+  // nlohmann's float format (shortest round-trip digits); non-finite values are null.
+  void number(double v) {
+    if (!std::isfinite(v)) {
+      out_ += "null";
+      return;
+    }
+    char buf[64];
+    char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
+    out_.append(buf, end);
+  }
+  void integer(long v) { out_ += std::to_string(v); }
+  void boolean(bool v) { out_ += v ? "true" : "false"; }
+  void string(const std::string& s) { string(s.data(), s.size()); }
+  void string(const char* s) { string(s, std::char_traits<char>::length(s)); }
+  void string(const char* s, std::size_t n) {
+    out_ += '"';
+    for (std::size_t i = 0; i < n; ++i) {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      switch (c) {
+        case '"': out_ += "\\\""; break;
+        case '\\': out_ += "\\\\"; break;
+        case '\b': out_ += "\\b"; break;
+        case '\f': out_ += "\\f"; break;
+        case '\n': out_ += "\\n"; break;
+        case '\r': out_ += "\\r"; break;
+        case '\t': out_ += "\\t"; break;
+        default:
+          if (c < 0x20) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\u%04x", c);
+            out_ += esc;
+          } else {
+            out_ += static_cast<char>(c);
+          }
+      }
+    }
+    out_ += '"';
+  }
+  template <typename F>
+  void list(int n, F&& each) {
+    out_ += '[';
+    for (int i = 0; i < n; ++i) {
+      if (i) out_ += ',';
+      each(i);
+    }
+    out_ += ']';
+  }
+
+ private:
+  std::string& out_;
+};
+
+// parameters, position, orientation (x, y, z, w with w ≥ 0), without the closing brace.
+void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof) {
+  w.raw("{");
+  w.key("parameters");
+  w.list(dof, [&](int i) { w.number(theta[i]); });
+  const Vector3d t = X.translation();
+  w.raw(",");
+  w.key("position");
+  w.list(3, [&](int i) { w.number(t[i]); });
+  Quaterniond q(X.linear());
+  q.normalize();
+  if (q.w() < 0) q.coeffs() = -q.coeffs();  // one of the two equal quaternions, deterministically
+  w.raw(",");
+  w.key("orientation");
+  w.list(4, [&](int i) { w.number(q.coeffs()[i]); });
+}
+
+// The message, with the user's constraint ids next to the indices (SPEC: ids are echoed).
+std::string resultMessage(const Problem& problem, const Solution& solution) {
+  std::string message = solution.message;
+  std::string ids;
+  for (int k : solution.conflicts) {
+    const std::string& id = problem.constraints[static_cast<std::size_t>(k)].id;
+    if (!id.empty()) ids += (ids.empty() ? "" : ", ") + std::to_string(k) + " = '" + id + "'";
+  }
+  if (!ids.empty()) message += " (constraints " + ids + ")";
+  return message;
+}
+
 }  // namespace
 
 json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
@@ -26,76 +119,112 @@ json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
   j["position"] = {t.x(), t.y(), t.z()};
   Quaterniond q(X.linear());
   q.normalize();
-  if (q.w() < 0) q.coeffs() = -q.coeffs();  // one of the two equal quaternions, deterministically
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
   j["orientation"] = {q.x(), q.y(), q.z(), q.w()};
   return j;
 }
 
-json resultToJson(const Problem& problem, const Solution& solution, const ResultOptions& opt) {
-  json r;
-  r["relpos"] = 1;
-  r["name"] = problem.name;
-  r["status"] = toString(solution.status);
-  // Name the user's constraint ids next to the indices in the message (SPEC: ids are echoed).
-  std::string message = solution.message;
-  std::string ids;
-  for (int k : solution.conflicts) {
-    const std::string& id = problem.constraints[static_cast<std::size_t>(k)].id;
-    if (!id.empty()) ids += (ids.empty() ? "" : ", ") + std::to_string(k) + " = '" + id + "'";
-  }
-  if (!ids.empty()) message += " (constraints " + ids + ")";
-  r["message"] = message;
-  json branches = json::array();
+void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
+                     std::string& out) {
+  out.clear();
+  Writer w(out);
+  w.raw("{");
+  w.key("relpos");
+  w.raw("1,");
+  w.key("name");
+  w.string(problem.name);
+  w.raw(",");
+  w.key("status");
+  w.string(toString(solution.status));
+  w.raw(",");
+  w.key("message");
+  w.string(resultMessage(problem, solution));
+  w.raw(",");
+  w.key("branches");
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
   std::mt19937_64 rng(opt.seed);
-  for (std::size_t b = 0; b < solution.branches.size(); ++b) {
-    const Manifold& m = *solution.branches[b].manifold;
+  w.list(static_cast<int>(solution.branches.size()), [&](int b) {
+    const Manifold& m = *solution.branches[static_cast<std::size_t>(b)].manifold;
     const int dof = m.dof();
-    json jb;
-    jb["dof"] = dof;
-    if (m.rotationalDof() >= 0) {
-      jb["rotational_dof"] = m.rotationalDof();
-      jb["translational_dof"] = m.translationalDof();
-    } else {
-      jb["rotational_dof"] = nullptr;
-      jb["translational_dof"] = nullptr;
-    }
-    jb["manifold"] = m.describe();
-    json params = json::array();
-    for (int i = 0; i < dof; ++i) {
+    w.raw("{");
+    w.key("dof");
+    w.integer(dof);
+    w.raw(",");
+    w.key("rotational_dof");
+    m.rotationalDof() >= 0 ? w.integer(m.rotationalDof()) : w.raw("null");
+    w.raw(",");
+    w.key("translational_dof");
+    m.rotationalDof() >= 0 ? w.integer(m.translationalDof()) : w.raw("null");
+    w.raw(",");
+    w.key("manifold");
+    w.string(m.describe());
+    w.raw(",");
+    w.key("parameters");
+    w.list(dof, [&](int i) {
       const Parameter p = m.parameter(i);
-      params.push_back({{"name", p.name},
-                        {"kind", toString(p.kind)},
-                        {"min", num(p.min)},
-                        {"max", num(p.max)},
-                        {"periodic", p.periodic}});
-    }
-    jb["parameters"] = params;
-    const NearestPose n = nearestOnBranch(solution.branches[b], problem.mobile.pose);
-    json jn = poseToJson(n.pose, n.parameters, dof);
-    jn["distance"] = n.distance;
-    jb["nearest"] = jn;
-    if (n.distance < best_d) best_d = n.distance, best = static_cast<int>(b);
+      w.raw("{");
+      w.key("name");
+      w.string(p.name);
+      w.raw(",");
+      w.key("kind");
+      w.string(toString(p.kind));
+      w.raw(",");
+      w.key("min");
+      w.number(p.min);
+      w.raw(",");
+      w.key("max");
+      w.number(p.max);
+      w.raw(",");
+      w.key("periodic");
+      w.boolean(p.periodic);
+      w.raw("}");
+    });
+    const NearestPose n = nearestOnBranch(solution.branches[static_cast<std::size_t>(b)],
+                                          problem.mobile.pose);
+    w.raw(",");
+    w.key("nearest");
+    writePose(w, n.pose, n.parameters, dof);
+    w.raw(",");
+    w.key("distance");
+    w.number(n.distance);
+    w.raw("}");
+    if (n.distance < best_d) best_d = n.distance, best = b;
     if (opt.samples > 0) {
-      json samples = json::array();
-      for (int s = 0; s < opt.samples; ++s) {
+      w.raw(",");
+      w.key("samples");
+      w.list(opt.samples, [&](int) {
         const Params t = sampleParameters(m, n.parameters, opt.window, rng);
-        samples.push_back(poseToJson(m.pose(t), t, dof));
-      }
-      jb["samples"] = samples;
+        writePose(w, m.pose(t), t, dof);
+        w.raw("}");
+      });
     }
-    branches.push_back(jb);
-  }
-  r["branches"] = branches;
-  r["best"] = best >= 0 ? json(best) : json(nullptr);
-  r["conflicts"] = solution.conflicts;
-  r["redundant"] = solution.redundant;
-  json rules = json::array();
-  for (const char* name : solution.rules) rules.push_back(name);
-  r["rules"] = rules;
-  r["stats"] = {{"solve_us", solution.solve_us}};
-  return r;
+    w.raw("}");
+  });
+  w.raw(",");
+  w.key("best");
+  best >= 0 ? w.integer(best) : w.raw("null");
+  w.raw(",");
+  w.key("conflicts");
+  w.list(static_cast<int>(solution.conflicts.size()), [&](int i) { w.integer(solution.conflicts[i]); });
+  w.raw(",");
+  w.key("redundant");
+  w.list(static_cast<int>(solution.redundant.size()), [&](int i) { w.integer(solution.redundant[i]); });
+  w.raw(",");
+  w.key("rules");
+  w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.rules[i]); });
+  w.raw(",");
+  w.key("stats");
+  w.raw("{");
+  w.key("solve_us");
+  w.number(solution.solve_us);
+  w.raw("}}");
+}
+
+json resultToJson(const Problem& problem, const Solution& solution, const ResultOptions& opt) {
+  std::string text;
+  writeResultLine(problem, solution, opt, text);
+  return json::parse(text);
 }
 
 }  // namespace relpos

@@ -58,8 +58,14 @@ class Parser {
       return false;
     }
     bool ok = true;
-    for (int i = 0; i < n; ++i)
-      ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
+    for (int i = 0; i < n; ++i) {
+      const json& e = j[i];
+      if (e.is_number()) {  // the common case, without building the element's path
+        v[i] = e.get<double>();
+        if (std::isfinite(v[i])) continue;
+      }
+      ok = number(e, path + "[" + std::to_string(i) + "]", &v[i]) && ok;
+    }
     return ok;
   }
 
