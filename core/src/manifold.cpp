@@ -29,8 +29,8 @@ double clampParam(const Parameter& p, double v) {
 namespace {
 
 // The pose distance at t once its closed-form parameters are projected (written into t).
-double distanceWithTail(const Manifold& m, const Isometry3d& X, Params* t) {
-  if (m.closedFormParams() != 0u) m.projectTail(X, t);
+double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form, Params* t) {
+  if (closed_form != 0u) m.projectTail(X, t);
   return poseDistance(m.pose(*t), X);
 }
 
@@ -42,7 +42,7 @@ Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* pa
                      double* best_d, double* step, double min_step) {
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
-  auto eval = [&](Params& t) { return distanceWithTail(m, X, &t); };
+  auto eval = [&](Params& t) { return distanceWithTail(m, X, fixed, &t); };
   auto sweep = [&](Params base, double* d) {
     for (int i = 0; i < n; ++i) {
       if (fixed & (1u << i)) continue;
@@ -98,7 +98,7 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
   for (int i = 0; i < m.dof(); ++i)
     if (!(fixed & (1u << i))) idx[k++] = i;
   if (k == 0) return best;
-  auto eval = [&](Params t) { return distanceWithTail(m, X, &t); };
+  auto eval = [&](Params t) { return distanceWithTail(m, X, fixed, &t); };
   for (int iter = 0; iter < 4; ++iter) {
     Eigen::Matrix<double, kMaxDof, 1> g = Eigen::Matrix<double, kMaxDof, 1>::Zero();
     Eigen::Matrix<double, kMaxDof, kMaxDof> H = Eigen::Matrix<double, kMaxDof, kMaxDof>::Identity();
@@ -125,9 +125,8 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
     const Eigen::Matrix<double, kMaxDof, 1> dx = llt.solve(-g);
     Params t = best;
     for (int a = 0; a < k; ++a) t[idx[a]] = clampParam(par[idx[a]], t[idx[a]] + dx[a]);
-    const double d = eval(t);
+    const double d = distanceWithTail(m, X, fixed, &t);  // t gets its closed-form parameters
     if (!(d < *best_d - 1e-15)) break;
-    distanceWithTail(m, X, &t);
     best = t;
     *best_d = d;
     if (dx.head(k).norm() < 10 * h) {
@@ -148,7 +147,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
   Params proj = m.project(X);
-  double proj_d = distanceWithTail(m, X, &proj);
+  double proj_d = distanceWithTail(m, X, fixed, &proj);
   if (fixed == (1u << n) - 1u || proj_d == 0.0) return proj;
   Parameter par[kMaxDof];
   int angles[kMaxDof], n_angles = 0;
@@ -172,7 +171,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
       t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % kGrid) / kGrid
                            : p.min + (p.max - p.min) * (code % kGrid) / (kGrid - 1);
     }
-    const double d = distanceWithTail(m, X, &t);
+    const double d = distanceWithTail(m, X, fixed, &t);
     if (d < grid_d) grid_d = d, grid_best = t;
   }
   // Both starts to a coarse step, then the better one to the end.

@@ -180,23 +180,29 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
     ++rows.k;
   };
   for (const Fundamental& f : linear) {
-    const TShape s = shapeOf(f, R);
     switch (f.kind) {
       case FundamentalKind::kPointPlane: {
-        if (rows.k == 0) rows.e1 = s.e1;
-        const double sign = f.point_side == Side::kMobile ? 1.0 : -1.0;
-        add(s.d, s.d.dot(s.c), sign, f.exact() ? -1 : n_ranged++);
+        // shapeOf without the in-plane direction, which only a lone plane needs (k = 1): this
+        // runs for every pose the nearest-pose search evaluates.
+        const bool point_mobile = f.point_side == Side::kMobile;
+        const Vector3d c = point_mobile ? Vector3d(f.q - R * f.p) : Vector3d(f.p - R * f.q);
+        const Vector3d d = point_mobile ? f.d : Vector3d(R * f.d);
+        if (linear.size() == 1) rows.e1 = shapeOf(f, R).e1;
+        add(d, d.dot(c), point_mobile ? 1.0 : -1.0, f.exact() ? -1 : n_ranged++);
         break;
       }
       case FundamentalKind::kPointLine: {  // exact, on the line: two planes through it
+        const TShape s = shapeOf(f, R);
         const Vector3d e2 = s.d.cross(s.e1);
         add(s.e1, s.e1.dot(s.c), 1.0, -1);
         add(e2, e2.dot(s.c), 1.0, -1);
         break;
       }
-      case FundamentalKind::kPointPoint:  // exact, pinned: three planes
+      case FundamentalKind::kPointPoint: {  // exact, pinned: three planes
+        const TShape s = shapeOf(f, R);
         for (int a = 0; a < 3; ++a) add(Vector3d::Unit(a), s.c[a], 1.0, -1);
         break;
+      }
       case FundamentalKind::kAngle:
       case FundamentalKind::kLineLine:
       case FundamentalKind::kCustom:
