@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "fast_json.hpp"
 #include "relpos/core/spec_io.hpp"
 
 namespace relpos {
@@ -14,8 +15,12 @@ namespace {
 // ordered_json keeps the spec's own order of features (messages list them as the user wrote them).
 using json = nlohmann::ordered_json;
 
+// The checks, over either document type: nlohmann's, or FastJson's for the common case.
+template <typename Json>
 class Parser {
  public:
+  using json = Json;
+
   Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
 
   void error(const std::string& path, const std::string& msg) {
@@ -44,7 +49,7 @@ class Parser {
       error(path, std::string("expected a number, got ") + j.type_name());
       return false;
     }
-    *v = j.get<double>();
+    *v = j.template get<double>();
     if (!std::isfinite(*v)) {
       error(path, "not a finite number");
       return false;
@@ -61,7 +66,7 @@ class Parser {
     for (int i = 0; i < n; ++i) {
       const json& e = j[i];
       if (e.is_number()) {  // the common case, without building the element's path
-        v[i] = e.get<double>();
+        v[i] = e.template get<double>();
         if (std::isfinite(v[i])) continue;
       }
       ok = number(e, path + "[" + std::to_string(i) + "]", &v[i]) && ok;
@@ -240,14 +245,14 @@ class Parser {
     o->name = path;
     if (j.contains("name")) {
       if (j["name"].is_string())
-        o->name = j["name"].get<std::string>();
+        o->name = j["name"].template get<std::string>();
       else
         error(join(path, "name"), "expected a string");
     }
     if (j.contains("pose")) pose(j["pose"], join(path, "pose"), &o->pose);
     if (j.contains("mesh")) {
       if (j["mesh"].is_string())
-        o->mesh = j["mesh"].get<std::string>();
+        o->mesh = j["mesh"].template get<std::string>();
       else
         error(join(path, "mesh"), "expected a file name");
     }
@@ -271,7 +276,7 @@ class Parser {
       error(path, "expected a feature name");
       return false;
     }
-    *name = j.get<std::string>();
+    *name = j.template get<std::string>();
     if (const Feature* x = o.find(*name)) {
       *f = *x;
       return true;
@@ -316,7 +321,7 @@ class Parser {
     bool ok = true;
     if (j.contains("id")) {
       if (j["id"].is_string()) {
-        c->id = j["id"].get<std::string>();
+        c->id = j["id"].template get<std::string>();
       } else {
         error(join(path, "id"), "expected a string");
         ok = false;
@@ -330,7 +335,7 @@ class Parser {
       error(join(path, "type"), "expected a string");
       ok = false;
     } else {
-      c->type = j["type"].get<std::string>();
+      c->type = j["type"].template get<std::string>();
       type = reg_.constraintType(c->type);
       if (!type) {
         error(join(path, "type"),
@@ -413,7 +418,7 @@ class Parser {
         error(join(path, "parallel"), "expected true or false");
         vals_ok = false;
       } else {
-        c->parallel = j["parallel"].get<bool>();
+        c->parallel = j["parallel"].template get<bool>();
         if (!(c->type == "distance" && c->fixed.kind == FeatureKind::kLine &&
               c->mobile.kind == FeatureKind::kLine))
           warn(join(path, "parallel"), "only meaningful for a line-line distance (ignored)");
@@ -452,7 +457,7 @@ class Parser {
     pb.name = default_name;
     if (j.contains("name")) {
       if (j["name"].is_string())
-        pb.name = j["name"].get<std::string>();
+        pb.name = j["name"].template get<std::string>();
       else
         error("name", "expected a string");
     }
@@ -519,6 +524,20 @@ void lineColumn(const std::string& text, std::size_t byte, std::size_t* line, st
 
 ParseResult parseSpec(const std::string& text, const Registry& registry,
                       const std::string& default_name) {
+  // Most specs are plain: read them without building nlohmann's document (fast_json.hpp).
+  thread_local detail::FastJson doc;
+  if (doc.parse(text)) {
+    ParseResult out;
+    Parser<detail::FastJson::Ref>(registry, out).document(doc.root(), default_name);
+    return out;
+  }
+  return detail::parseSpecWithNlohmann(text, registry, default_name);
+}
+
+namespace detail {
+
+ParseResult parseSpecWithNlohmann(const std::string& text, const Registry& registry,
+                                  const std::string& default_name) {
   ParseResult out;
   json j;
   try {
@@ -539,9 +558,11 @@ ParseResult parseSpec(const std::string& text, const Registry& registry,
         {"", "malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2))});
     return out;
   }
-  Parser(registry, out).document(j, default_name);
+  Parser<json>(registry, out).document(j, default_name);
   return out;
 }
+
+}  // namespace detail
 
 ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
   std::ifstream in(file, std::ios::binary);

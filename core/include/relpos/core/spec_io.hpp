@@ -29,6 +29,13 @@ ParseResult parseSpec(const std::string& text, const Registry& registry,
                       const std::string& default_name = "spec");
 ParseResult parseSpecFile(const std::string& file, const Registry& registry);
 
+namespace detail {
+// parseSpec through nlohmann's document only (parseSpec reads plain specs with its own reader and
+// must give the same result: the tests compare the two).
+ParseResult parseSpecWithNlohmann(const std::string& text, const Registry& registry,
+                                  const std::string& default_name);
+}  // namespace detail
+
 // The spec's "plugins" list, each path resolved against the spec's folder: what to load before
 // parsing it. Empty when there is none or the file cannot be read (parseSpecFile reports that).
 std::vector<std::string> specPluginPaths(const std::string& file);
