@@ -119,6 +119,19 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
         p[idx[b]] += h;
         H(a, b) = H(b, a) = (eval(p) - plus[a] - plus[b] + *best_d) / (h * h);
       }
+    // A parameter at a bound that the descent would push out of it is held there (projected
+    // Newton): its row and column become the identity, its step zero.
+    for (int a = 0; a < k; ++a) {
+      const Parameter& pa = par[idx[a]];
+      const double v = best[idx[a]];
+      if (pa.periodic) continue;
+      if ((v <= pa.min && g[a] > 0) || (v >= pa.max && g[a] < 0)) {
+        H.row(a).setZero();
+        H.col(a).setZero();
+        H(a, a) = 1.0;
+        g[a] = 0.0;
+      }
+    }
     // Only a positive-definite model has a minimum to step to.
     const Eigen::LLT<Eigen::Matrix<double, kMaxDof, kMaxDof>> llt(H);
     if (llt.info() != Eigen::Success) break;

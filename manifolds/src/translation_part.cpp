@@ -243,6 +243,79 @@ Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
   return T;
 }
 
+// The projection of T onto the flat where rows `active` (a bit mask) hold n·x = b.
+Vector3d ontoFlat(const PlaneRows& rows, unsigned active, const double* b, const Vector3d& T) {
+  Vector3d n[3];
+  double r[3];
+  int m = 0;
+  for (int i = 0; i < rows.k; ++i)
+    if (active & (1u << i)) n[m] = rows.n[i], r[m] = rows.n[i].dot(T) - b[i], ++m;
+  if (m == 0) return T;
+  if (m == 1) return T - n[0] * (r[0] / n[0].squaredNorm());
+  if (m == 2) {
+    Eigen::Matrix2d G;
+    G << n[0].dot(n[0]), n[0].dot(n[1]), n[1].dot(n[0]), n[1].dot(n[1]);
+    const Eigen::Vector2d l = G.inverse() * Eigen::Vector2d(r[0], r[1]);
+    return T - l[0] * n[0] - l[1] * n[1];
+  }
+  // Three independent rows: the point itself (Cramer's rule), whatever T.
+  const Vector3d c12 = n[1].cross(n[2]), c20 = n[2].cross(n[0]), c01 = n[0].cross(n[1]);
+  return T - (r[0] * c12 + r[1] * c20 + r[2] * c01) / n[0].dot(c12);
+}
+
+// The point of the set (exact rows held, ranged rows within their bounds) nearest T: every way
+// of holding each ranged row at a bound or leaving it free (at most 3³), each the projection of T
+// onto its flat; the nearest that keeps the free rows within bounds is the answer, since the
+// optimum's own active set is among them. (Clamping the heights one by one is exact only for
+// orthogonal rows.)
+Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>& linear,
+                       const Vector3d& T) {
+  double lo[3], hi[3];
+  unsigned ranged = 0, exact = 0;
+  const Fundamental* by_range[3] = {nullptr, nullptr, nullptr};
+  int r = 0;
+  for (const Fundamental& f : linear)
+    if (!f.exact()) by_range[r++] = &f;
+  for (int i = 0; i < rows.k; ++i) {
+    if (rows.ranged[i] < 0) {
+      exact |= 1u << i;
+      lo[i] = hi[i] = rows.h0[i];
+      continue;
+    }
+    ranged |= 1u << i;
+    const Fundamental& f = *by_range[rows.ranged[i]];
+    const double a = rows.h0[i] + rows.sign[i] * f.lo, b = rows.h0[i] + rows.sign[i] * f.hi;
+    lo[i] = std::min(a, b), hi[i] = std::max(a, b);
+  }
+  Vector3d best = T;
+  double best_d = std::numeric_limits<double>::infinity();
+  int combos = 1;
+  for (int i = 0; i < rows.k; ++i)
+    if (ranged & (1u << i)) combos *= 3;
+  for (int c = 0; c < combos; ++c) {
+    unsigned active = exact;
+    double b[3] = {lo[0], lo[1], lo[2]};
+    for (int i = 0, code = c; i < rows.k; ++i) {
+      if (!(ranged & (1u << i))) continue;
+      const int state = code % 3;  // 0: free, 1: at lo, 2: at hi
+      code /= 3;
+      if (state == 0) continue;
+      active |= 1u << i;
+      b[i] = state == 1 ? lo[i] : hi[i];
+    }
+    const Vector3d x = ontoFlat(rows, active, b, T);
+    bool inside = true;
+    for (int i = 0; i < rows.k && inside; ++i) {
+      if (!(ranged & (1u << i)) || (active & (1u << i))) continue;
+      const double h = rows.n[i].dot(x), slack = 1e-12 * (1.0 + std::abs(h));
+      inside = h >= lo[i] - slack && h <= hi[i] + slack;
+    }
+    const double d = (x - T).squaredNorm();
+    if (inside && d < best_d) best_d = d, best = x;
+  }
+  return best;
+}
+
 }  // namespace
 
 int TranslationPart::planeRows() const { return planeRowsFor(linear, Matrix3d::Identity()).k; }
@@ -257,18 +330,8 @@ bool TranslationPart::projectsExactly() const {
   switch (kind) {
     case TranslationKind::kEllipse:
       return false;
-    case TranslationKind::kPlanes: {
-      // Clamping each ranged height is the nearest point when the rows are orthogonal, which
-      // holds for every R when all of them turn together (one side) or none do.
-      if (rangedPlanes() == 0) return true;
-      for (const Fundamental& f : linear)
-        if (f.point_side != linear[0].point_side) return false;
-      const PlaneRows rows = planeRowsFor(linear, Matrix3d::Identity());
-      for (int i = 0; i < rows.k; ++i)
-        for (int j = 0; j < i; ++j)
-          if (std::abs(rows.n[i].dot(rows.n[j])) > 1e-12) return false;
-      return true;
-    }
+    case TranslationKind::kPlanes:
+      return true;  // nearestOnRows
     case TranslationKind::kBoundedCylinder: {
       // Square cuts only; line and plane are on the same object, so this holds for every R.
       const Matrix3d I = Matrix3d::Identity();
@@ -383,8 +446,10 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     return;
   }
   if (kind == TranslationKind::kPlanes) {
-    // The range values from T's heights over the planes (clamped), then the free coordinates.
+    // The nearest point of the set, then its range values (its heights over the planes) and its
+    // free coordinates.
     const PlaneRows rows = planeRowsFor(linear, R);
+    const Vector3d N = nearestOnRows(rows, linear, T);
     const int free = 3 - rows.k;
     double* v = t + free;
     int r = 0;
@@ -392,7 +457,7 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
       if (f.exact()) continue;
       for (int i = 0; i < rows.k; ++i)
         if (rows.ranged[i] == r) {
-          const double x = rows.sign[i] * (rows.n[i].dot(T) - rows.h0[i]);
+          const double x = rows.sign[i] * (rows.n[i].dot(N) - rows.h0[i]);
           v[r] = std::min(f.hi, std::max(f.lo, x));
         }
       ++r;
