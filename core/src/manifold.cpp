@@ -30,8 +30,7 @@ namespace {
 
 // The pose distance at t once its closed-form parameters are projected (written into t).
 double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form, Params* t) {
-  if (closed_form != 0u) m.projectTail(X, t);
-  return poseDistance(m.pose(*t), X);
+  return poseDistance(closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t), X);
 }
 
 // Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
@@ -188,7 +187,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     if (d < grid_d) grid_d = d, grid_best = t;
   }
   // Both starts to a coarse step, then the better one to the end.
-  constexpr double kCoarse = 1e-2, kFine = 1e-8;
+  constexpr double kCoarse = 3e-2, kFine = 1e-8;
   double proj_step = 0.25, grid_step = 0.25;
   Params best = patternSearch(m, X, par, proj, &proj_d, &proj_step, kCoarse);
   double best_d = proj_d, best_step = proj_step;

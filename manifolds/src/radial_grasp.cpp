@@ -86,18 +86,30 @@ unsigned RadialGraspManifold::closedFormParams() const {
 }
 
 void RadialGraspManifold::projectTail(const Isometry3d& X, Params* th) const {
+  poseWithTail(X, th);
+}
+
+Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
   Params& t = *th;
   const int k_theta = dof() - 1;
-  // X's origin in the frame F·Rz(ψ), less the part that turns with θ: what (r, 0, z) must match.
+  // X = outer · T(r, 0, z) · inner; X's origin in the frame `outer`, less the part that turns
+  // with θ, is what (r, 0, z) must match.
+  const Isometry3d outer = F_ * rot(2, t[0]);
   const Isometry3d inner = A_ * rot(2, t[k_theta]) * L_inv_;
-  const Vector3d p = (F_ * rot(2, t[0])).inverse() * X.translation() - inner.translation();
+  const Vector3d p =
+      outer.linear().transpose() * (X.translation() - outer.translation()) - inner.translation();
   int k = 1;
+  double h = s_.h_lo, r = s_.r_lo;
   if (hFree()) {
-    double h = planeValueOf(p.z());
+    h = planeValueOf(p.z());
     if (s_.has_height) h = std::min(s_.h_hi, std::max(s_.h_lo, h));
     t[k++] = h;
   }
-  if (rRanged()) t[k] = std::min(s_.r_hi, std::max(s_.r_lo, p.x()));
+  if (rRanged()) t[k] = r = std::min(s_.r_hi, std::max(s_.r_lo, p.x()));
+  Isometry3d Y = Isometry3d::Identity();
+  Y.linear() = outer.linear() * inner.linear();
+  Y.translation() = outer * (Vector3d(r, 0.0, axisHeightOf(h)) + inner.translation());
+  return Y;
 }
 
 std::string RadialGraspManifold::describe() const {

@@ -28,6 +28,14 @@ void SeparableManifold::projectTail(const Isometry3d& X, Params* theta) const {
   trans_.project(R, X.translation(), theta->data() + rot_.dof());
 }
 
+Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) const {
+  Isometry3d Y = Isometry3d::Identity();
+  Y.linear() = rot_.rotation(theta->data());
+  trans_.project(Y.linear(), X.translation(), theta->data() + rot_.dof());
+  Y.translation() = trans_.translation(Y.linear(), theta->data() + rot_.dof());
+  return Y;
+}
+
 std::string SeparableManifold::describe() const {
   return std::string("rotation ") + toString(rot_.kind) + ", translation " + toString(trans_.kind);
 }

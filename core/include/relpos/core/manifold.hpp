@@ -54,6 +54,11 @@ class Manifold {
     (void)X;
     (void)theta;
   }
+  // projectTail then pose, in one: a manifold may share the work (the rotation both need).
+  virtual Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const {
+    projectTail(X, theta);
+    return pose(*theta);
+  }
 
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;

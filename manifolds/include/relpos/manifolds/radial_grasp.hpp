@@ -35,6 +35,7 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   // rectangle (radius × height) in the plane through the axis, so clamping is the nearest point.
   unsigned closedFormParams() const override;
   void projectTail(const Isometry3d& X, Params* theta) const override;
+  Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
 
  private:

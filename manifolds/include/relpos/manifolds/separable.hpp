@@ -24,6 +24,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
     return trans_.projectsExactly() ? ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u) : 0u;
   }
   void projectTail(const Isometry3d& X, Params* theta) const override;
+  Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   const RotationPart& rotation() const { return rot_; }
   const TranslationPart& translation() const { return trans_; }
