@@ -98,7 +98,7 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
     if (!(fixed & (1u << i))) idx[k++] = i;
   if (k == 0) return best;
   auto eval = [&](Params t) { return distanceWithTail(m, X, fixed, &t); };
-  for (int iter = 0; iter < 4; ++iter) {
+  for (int iter = 0; iter < 8; ++iter) {
     Eigen::Matrix<double, kMaxDof, 1> g = Eigen::Matrix<double, kMaxDof, 1>::Zero();
     Eigen::Matrix<double, kMaxDof, kMaxDof> H = Eigen::Matrix<double, kMaxDof, kMaxDof>::Identity();
     double plus[kMaxDof];
@@ -134,10 +134,16 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
     // Only a positive-definite model has a minimum to step to.
     const Eigen::LLT<Eigen::Matrix<double, kMaxDof, kMaxDof>> llt(H);
     if (llt.info() != Eigen::Success) break;
-    const Eigen::Matrix<double, kMaxDof, 1> dx = llt.solve(-g);
-    Params t = best;
-    for (int a = 0; a < k; ++a) t[idx[a]] = clampParam(par[idx[a]], t[idx[a]] + dx[a]);
-    const double d = distanceWithTail(m, X, fixed, &t);  // t gets its closed-form parameters
+    Eigen::Matrix<double, kMaxDof, 1> dx = llt.solve(-g);
+    // The full step, else shorter ones (far from the minimum the quadratic model overshoots).
+    Params t;
+    double d = *best_d;
+    for (int cut = 0; cut < 4; ++cut, dx *= 0.25) {
+      t = best;
+      for (int a = 0; a < k; ++a) t[idx[a]] = clampParam(par[idx[a]], t[idx[a]] + dx[a]);
+      d = distanceWithTail(m, X, fixed, &t);  // t gets its closed-form parameters
+      if (d < *best_d - 1e-15) break;
+    }
     if (!(d < *best_d - 1e-15)) break;
     best = t;
     *best_d = d;
