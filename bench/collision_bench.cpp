@@ -153,7 +153,8 @@ void BM_GraspCollisionFilteredSolve(benchmark::State& state) {
   const collision::Scene scene(
       collision::buildModel(gripper),
       {{"can", p.fixed.pose, collision::buildModel(cylinderMesh(0.033, 0.0, 0.12, 100, 50))},
-       {"counter", counter, collision::buildModel(collision::boxMesh(Vector3d(0.3, 0.3, 0.02), 29))}});
+       {"counter", counter,
+        collision::buildModel(collision::boxMesh(Vector3d(0.3, 0.3, 0.02), 29))}});
   Workspace ws;
   Solution s;
   collision::FilterOptions opt;

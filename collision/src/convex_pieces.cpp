@@ -155,9 +155,8 @@ bool buildPiece(const Mesh& mesh, const std::vector<int>& tris, ConvexPiece* p) 
       direction_of[f] = -1;  // a sliver: no direction, and its edges lie along real ones
       continue;
     }
-    auto same = std::find_if(directions.begin(), directions.end(), [&](const Vector3d& d) {
-      return d.dot(n) > 0 && sameAxis(d, n);
-    });
+    auto same = std::find_if(directions.begin(), directions.end(),
+                             [&](const Vector3d& d) { return d.dot(n) > 0 && sameAxis(d, n); });
     direction_of[f] = static_cast<int>(same - directions.begin());
     if (same == directions.end()) directions.push_back(n);
   }
@@ -217,7 +216,8 @@ bool buildPiece(const Mesh& mesh, const std::vector<int>& tris, ConvexPiece* p) 
   p->solid = std::abs(signedVolume(sub.vertices, sub.triangles)) >= (1 - 1e-9) * hull_volume;
   p->inner_depth = std::numeric_limits<double>::infinity();
   for (const auto& a : p->face_axes)
-    p->inner_depth = std::min({p->inner_depth, a.hi - a.n.dot(p->centre), a.n.dot(p->centre) - a.lo});
+    p->inner_depth =
+        std::min({p->inner_depth, a.hi - a.n.dot(p->centre), a.n.dot(p->centre) - a.lo});
   return true;
 }
 

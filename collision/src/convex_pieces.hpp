@@ -33,14 +33,15 @@ struct ConvexPiece {
     double lo, hi;  // this piece's extent along n
   };
   std::vector<Axis> face_axes;
-  std::vector<Vector3d> edge_directions;  // unit, up to sign; edges between coplanar facets left out
+  // Unit, up to sign; edges between coplanar facets (diagonals of one face) left out.
+  std::vector<Vector3d> edge_directions;
   Vector3d centre = Vector3d::Zero();
   double radius = 0.0;
   bool solid = false;  // the piece is exactly its hull (a convex solid)
-  // Where climbing starts: the extreme vertex of the nearest of kStarts directions (cube-map
-  // cells), so that it takes a step or two.
+  // Where climbing starts: the extreme vertex for the centre direction of the cube-map cell the
+  // query direction falls in (6 faces × kCells² cells), so that it takes a step or two.
   static constexpr int kCells = 4;
-  std::vector<int> start;  // 6 faces × kCells² cells
+  std::vector<int> start;
   double inner_depth = 0.0;  // solid: depth of `centre` inside the piece (distance to its faces)
 
   double support(const Vector3d& u) const;  // max of u·v over the piece

@@ -72,7 +72,8 @@ bool FastJson::number(double* out) {
   // Out of range (nlohmann reports it) or not all read: not ours.
   if (r.ec != std::errc() || r.ptr != last) return false;
   // nlohmann keeps "-0" as the integer 0, which reads back as +0.0.
-  if (*out == 0.0 && std::string_view(first, pos_ - start).find_first_of(".eE") == std::string_view::npos)
+  if (*out == 0.0 &&
+      std::string_view(first, pos_ - start).find_first_of(".eE") == std::string_view::npos)
     *out = 0.0;
   return true;
 }
@@ -157,22 +158,31 @@ const FastJson::Node& FastJson::Ref::node() const {
 
 const char* FastJson::Ref::type_name() const {
   switch (type()) {
-    case Type::kNull: return "null";
-    case Type::kBoolean: return "boolean";
-    case Type::kNumber: return "number";
-    case Type::kString: return "string";
-    case Type::kArray: return "array";
-    case Type::kObject: return "object";
+    case Type::kNull:
+      return "null";
+    case Type::kBoolean:
+      return "boolean";
+    case Type::kNumber:
+      return "number";
+    case Type::kString:
+      return "string";
+    case Type::kArray:
+      return "array";
+    case Type::kObject:
+      return "object";
   }
   return "null";
 }
 
 std::size_t FastJson::Ref::size() const {
   switch (type()) {
-    case Type::kNull: return 0;
+    case Type::kNull:
+      return 0;
     case Type::kArray:
-    case Type::kObject: return node().count;
-    default: return 1;
+    case Type::kObject:
+      return node().count;
+    default:
+      return 1;
   }
 }
 

@@ -34,8 +34,8 @@ class FastJson {
     Type type = Type::kNull;
     bool boolean = false;
     double number = 0.0;
-    std::string_view text;  // a string's value
-    std::string_view key;   // its key, for a member of an object
+    std::string_view text;               // a string's value
+    std::string_view key;                // its key, for a member of an object
     std::int32_t first = -1, next = -1;  // first child; next sibling
     std::uint32_t count = 0;             // children
   };

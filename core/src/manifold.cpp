@@ -1,7 +1,6 @@
 #include "relpos/core/manifold.hpp"
 
 #include <Eigen/Cholesky>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

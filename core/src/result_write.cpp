@@ -46,13 +46,27 @@ class Writer {
     for (std::size_t i = 0; i < n; ++i) {
       const unsigned char c = static_cast<unsigned char>(s[i]);
       switch (c) {
-        case '"': out_ += "\\\""; break;
-        case '\\': out_ += "\\\\"; break;
-        case '\b': out_ += "\\b"; break;
-        case '\f': out_ += "\\f"; break;
-        case '\n': out_ += "\\n"; break;
-        case '\r': out_ += "\\r"; break;
-        case '\t': out_ += "\\t"; break;
+        case '"':
+          out_ += "\\\"";
+          break;
+        case '\\':
+          out_ += "\\\\";
+          break;
+        case '\b':
+          out_ += "\\b";
+          break;
+        case '\f':
+          out_ += "\\f";
+          break;
+        case '\n':
+          out_ += "\\n";
+          break;
+        case '\r':
+          out_ += "\\r";
+          break;
+        case '\t':
+          out_ += "\\t";
+          break;
         default:
           if (c < 0x20) {
             char esc[8];
@@ -180,8 +194,8 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
       w.boolean(p.periodic);
       w.raw("}");
     });
-    const NearestPose n = nearestOnBranch(solution.branches[static_cast<std::size_t>(b)],
-                                          problem.mobile.pose);
+    const NearestPose n =
+        nearestOnBranch(solution.branches[static_cast<std::size_t>(b)], problem.mobile.pose);
     w.raw(",");
     w.key("nearest");
     writePose(w, n.pose, n.parameters, dof);
@@ -206,10 +220,12 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
   best >= 0 ? w.integer(best) : w.raw("null");
   w.raw(",");
   w.key("conflicts");
-  w.list(static_cast<int>(solution.conflicts.size()), [&](int i) { w.integer(solution.conflicts[i]); });
+  w.list(static_cast<int>(solution.conflicts.size()),
+         [&](int i) { w.integer(solution.conflicts[i]); });
   w.raw(",");
   w.key("redundant");
-  w.list(static_cast<int>(solution.redundant.size()), [&](int i) { w.integer(solution.redundant[i]); });
+  w.list(static_cast<int>(solution.redundant.size()),
+         [&](int i) { w.integer(solution.redundant[i]); });
   w.raw(",");
   w.key("rules");
   w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.rules[i]); });

@@ -143,7 +143,8 @@ collision::Mesh twoBoxes(const Box& p, const Box& q) {
   for (auto& v : m.vertices) v = p.X * v;
   const int base = static_cast<int>(m.vertices.size());
   for (const auto& v : second.vertices) m.vertices.push_back(q.X * v);
-  for (const auto& t : second.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  for (const auto& t : second.triangles)
+    m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   collision::classify(m);
   return m;
 }
@@ -156,8 +157,8 @@ TEST(CollisionOracle, NonConvexAndTwoPieceMeshesAgreeWithTheirParts) {
   // The L: [0, 0.2] x [0, 0.1] plus [0, 0.1] x [0.1, 0.2], 0.06 high.
   const Box b1{Isometry3d(Eigen::Translation3d(0.1, 0.05, 0.03)), Vector3d(0.1, 0.05, 0.03)};
   const Box b2{Isometry3d(Eigen::Translation3d(0.05, 0.15, 0.03)), Vector3d(0.05, 0.05, 0.03)};
-  const collision::Mesh ell = prismMesh(
-      {{0, 0}, {0.2, 0}, {0.2, 0.1}, {0.1, 0.1}, {0.1, 0.2}, {0, 0.2}}, 0.0, 0.06);
+  const collision::Mesh ell =
+      prismMesh({{0, 0}, {0.2, 0}, {0.2, 0.1}, {0.1, 0.1}, {0.1, 0.2}, {0, 0.2}}, 0.0, 0.06);
   ASSERT_TRUE(ell.closed && ell.oriented);
   // Two boxes apart: the L's parts pulled 5 cm apart along y.
   Box far2 = b2;
@@ -168,9 +169,9 @@ TEST(CollisionOracle, NonConvexAndTwoPieceMeshesAgreeWithTheirParts) {
     const Box parts[2] = {b1, l_shape ? b2 : far2};
     int collide = 0, free = 0;
     for (int k = 0; k < 300; ++k) {
-      const Box obstacle{rng.pose(k % 3 == 0), Vector3d(rng.uniform(0.02, 0.15),
-                                                        rng.uniform(0.02, 0.15),
-                                                        rng.uniform(0.02, 0.15))};
+      const Box obstacle{
+          rng.pose(k % 3 == 0),
+          Vector3d(rng.uniform(0.02, 0.15), rng.uniform(0.02, 0.15), rng.uniform(0.02, 0.15))};
       Isometry3d X = rng.pose(k % 4 == 0);
       X.translation() = obstacle.X.translation() + rng.unit() * rng.uniform(0.0, 0.3);
       const Scene scene(buildModel(l_shape ? ell : pair),

@@ -85,17 +85,25 @@ void expectSame(const std::string& text, const std::string& what) {
 TEST(SpecReader, BundledSpecsParseAsWithTheJsonLibrary) {
   const auto texts = bundledTexts();
   ASSERT_GT(texts.size(), 150u);
-  for (std::size_t i = 0; i < texts.size(); ++i) expectSame(texts[i], "bundled #" + std::to_string(i));
+  for (std::size_t i = 0; i < texts.size(); ++i)
+    expectSame(texts[i], "bundled #" + std::to_string(i));
 }
 
 TEST(SpecReader, MutatedSpecsParseAsWithTheJsonLibrary) {
   const auto texts = bundledTexts();
   std::mt19937_64 rng(81);
   // Pieces that stress the reader: structure, escapes, non-ASCII, numbers at the grammar's edges.
-  const std::vector<std::string> pieces = {
-      "{", "}", "[", "]", ",", ":", "\"", " ", "\\", "\\n", "\\u0041", "\xc3\xa9", "-0", "-0.0",
-      "1e400", "1e-400", "01", "1.", ".5", "+1", "1e", "1E+2", "-", "true", "false", "null",
-      "\"name\":\"dup\",", "\t", "\x01", "123456789012345678901234567890", "\xc3", "\xff"};
+  const std::vector<std::string> pieces = {"{",      "}",       "[",
+                                           "]",      ",",       ":",
+                                           "\"",     " ",       "\\",
+                                           "\\n",    "\\u0041", "\xc3\xa9",
+                                           "-0",     "-0.0",    "1e400",
+                                           "1e-400", "01",      "1.",
+                                           ".5",     "+1",      "1e",
+                                           "1E+2",   "-",       "true",
+                                           "false",  "null",    "\"name\":\"dup\",",
+                                           "\t",     "\x01",    "123456789012345678901234567890",
+                                           "\xc3",   "\xff"};
   int checked = 0;
   for (int k = 0; k < 4000; ++k) {
     std::string t = texts[rng() % texts.size()];

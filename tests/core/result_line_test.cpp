@@ -20,7 +20,8 @@ namespace {
 std::vector<Problem> bundledProblems() {
   std::vector<Problem> v;
   for (const char* dir : {"examples", "scenarios", "rules"})
-    for (const auto& e : std::filesystem::directory_iterator(std::string(RELPOS_DATA_DIR) + "/" + dir))
+    for (const auto& e :
+         std::filesystem::directory_iterator(std::string(RELPOS_DATA_DIR) + "/" + dir))
       if (e.path().extension() == ".json") {
         ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
         if (r.problem) v.push_back(*r.problem);

@@ -56,8 +56,8 @@ nlohmann::ordered_json poseToJson(const Isometry3d& X, const Params& theta, int 
 
 // The result document of SPEC.md §2 (nearest pose per branch, best, samples, etc.) as one line
 // of compact JSON, into `out` (reused: a batch keeps one per thread).
-void writeResultLine(const Problem& problem, const Solution& solution,
-                     const ResultOptions& options, std::string& out);
+void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& options,
+                     std::string& out);
 
 // The same document as a JSON tree (to add fields to, or to print indented).
 nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
