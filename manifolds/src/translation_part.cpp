@@ -311,6 +311,9 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
       inside = h >= lo[i] - slack && h <= hi[i] + slack;
     }
     const double d = (x - T).squaredNorm();
+    // No ranged row held and all within bounds: the projection onto the exact rows' flat, which
+    // is nearer than any point of the set.
+    if (inside && c == 0) return x;
     if (inside && d < best_d) best_d = d, best = x;
   }
   return best;
