@@ -68,6 +68,17 @@ TShape shapeOf(const Fundamental& f, const Matrix3d& R) {
   return s;
 }
 
+namespace {
+// The plane of a point-plane constraint in translation space (shapeOf's c and d without its
+// in-plane direction, which costs a perpendicular and is not needed where this is used: the
+// nearest-pose search evaluates these for every pose it tries).
+void planeOf(const Fundamental& f, const Matrix3d& R, Vector3d* c, Vector3d* n) {
+  const bool point_mobile = f.point_side == Side::kMobile;
+  *c = point_mobile ? Vector3d(f.q - R * f.p) : Vector3d(f.p - R * f.q);
+  *n = point_mobile ? f.d : Vector3d(R * f.d);
+}
+}  // namespace
+
 int TranslationPart::dof() const {
   switch (kind) {
     case TranslationKind::kFree:
@@ -182,13 +193,11 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
   for (const Fundamental& f : linear) {
     switch (f.kind) {
       case FundamentalKind::kPointPlane: {
-        // shapeOf without the in-plane direction, which only a lone plane needs (k = 1): this
-        // runs for every pose the nearest-pose search evaluates.
-        const bool point_mobile = f.point_side == Side::kMobile;
-        const Vector3d c = point_mobile ? Vector3d(f.q - R * f.p) : Vector3d(f.p - R * f.q);
-        const Vector3d d = point_mobile ? f.d : Vector3d(R * f.d);
+        // The in-plane direction only for a lone plane (k = 1), the one case that needs it.
+        Vector3d c, d;
+        planeOf(f, R, &c, &d);
         if (linear.size() == 1) rows.e1 = shapeOf(f, R).e1;
-        add(d, d.dot(c), point_mobile ? 1.0 : -1.0, f.exact() ? -1 : n_ranged++);
+        add(d, d.dot(c), f.point_side == Side::kMobile ? 1.0 : -1.0, f.exact() ? -1 : n_ranged++);
         break;
       }
       case FundamentalKind::kPointLine: {  // exact, on the line: two planes through it
@@ -389,15 +398,17 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
     return T;
   }
   if (kind == TranslationKind::kBoundedCylinder) {
-    const TShape cyl = shapeOf(c1, R), pl = shapeOf(c2, R);
+    const TShape cyl = shapeOf(c1, R);
+    Vector3d pc, pn;
+    planeOf(c2, R, &pc, &pn);
     const double r = c1.exact() ? c1.value() : t[1];
     const double v = c2.exact() ? 0.0 : t[c1.exact() ? 1 : 2];
     const double sign = c2.point_side == Side::kMobile ? 1.0 : -1.0;
-    const double h = pl.d.dot(pl.c) + sign * v;  // the plane n·T = h
+    const double h = pn.dot(pc) + sign * v;  // the plane n·T = h
     // Out from the axis along the azimuth, then along the axis onto the plane (an oblique plane
     // cuts the thick cylinder obliquely: Somani's oblique cylinder).
     const Vector3d u = std::cos(t[0]) * cyl.e1 + std::sin(t[0]) * cyl.d.cross(cyl.e1);
-    const double s = (h - pl.d.dot(cyl.c) - r * pl.d.dot(u)) / pl.d.dot(cyl.d);
+    const double s = (h - pn.dot(cyl.c) - r * pn.dot(u)) / pn.dot(cyl.d);
     return cyl.c + s * cyl.d + r * u;
   }
   const TShape s = shapeOf(c1, R);
@@ -471,7 +482,9 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     return;
   }
   if (kind == TranslationKind::kBoundedCylinder) {
-    const TShape cyl = shapeOf(c1, R), pl = shapeOf(c2, R);
+    const TShape cyl = shapeOf(c1, R);
+    Vector3d pc, pn;
+    planeOf(c2, R, &pc, &pn);
     const Vector3d w = T - cyl.c;
     const double along = w.dot(cyl.d);
     const Vector3d perp = w - along * cyl.d;
@@ -481,7 +494,7 @@ void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) c
     if (!c1.exact()) t[k++] = std::min(c1.hi, std::max(c1.lo, perp.norm()));
     if (!c2.exact()) {
       const double sign = c2.point_side == Side::kMobile ? 1.0 : -1.0;
-      t[k] = std::min(c2.hi, std::max(c2.lo, sign * (pl.d.dot(T) - pl.d.dot(pl.c))));
+      t[k] = std::min(c2.hi, std::max(c2.lo, sign * (pn.dot(T) - pn.dot(pc))));
     }
     return;
   }
