@@ -337,6 +337,15 @@ std::vector<ConvexPiece> convexPieces(const Mesh& mesh) {
   std::vector<ConvexPiece> pieces(groups.size());
   for (std::size_t i = 0; i < groups.size(); ++i)
     if (!buildPiece(mesh, groups[i], &pieces[i])) return {};
+  // Pieces of one mesh that overlap (a shell inside another: a hollow solid, whose cavity is
+  // outside it) are not solids of their own: the solid is what the crossings' parity says, which
+  // FCL's path and the inside test decide. Their hulls still prove poses free.
+  const Matrix3d I = Matrix3d::Identity();
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (pairVerdict(pieces[i], I, Vector3d::Zero(), pieces[j], 0.0, true).kind !=
+          PiecesVerdict::kFree)
+        pieces[i].solid = pieces[j].solid = false;
   return pieces;
 }
 

@@ -195,6 +195,42 @@ TEST(CollisionOracle, NonConvexAndTwoPieceMeshesAgreeWithTheirParts) {
   }
 }
 
+// A hollow box (an outer shell and an inner one wound inward, one mesh): its cavity is not part
+// of the solid. A box in the cavity is free, one across the inner wall or inside the wall's
+// material collides — whichever of the two is the mobile object.
+TEST(CollisionOracle, AHollowSolidsCavityIsFree) {
+  collision::Mesh hollow = boxMesh(Vector3d(0.3, 0.3, 0.3), 2);
+  collision::Mesh inner = boxMesh(Vector3d(0.2, 0.2, 0.2), 3);
+  const int base = static_cast<int>(hollow.vertices.size());
+  hollow.vertices.insert(hollow.vertices.end(), inner.vertices.begin(), inner.vertices.end());
+  for (const auto& t : inner.triangles)  // reversed: the inner shell faces the cavity
+    hollow.triangles.push_back({t[0] + base, t[2] + base, t[1] + base});
+  collision::classify(hollow);
+  ASSERT_TRUE(hollow.closed && hollow.oriented);
+  const struct {
+    double x, h;
+    bool collides;
+    const char* what;
+  } cases[] = {{0.0, 0.05, false, "in the cavity"},
+               {0.12, 0.05, false, "in the cavity, near the wall"},
+               {0.2, 0.05, true, "across the inner wall"},
+               {0.25, 0.02, true, "inside the wall's material"},
+               {0.3, 0.05, true, "across the outer wall"},
+               {0.5, 0.05, false, "outside"}};
+  for (const auto& c : cases) {
+    Isometry3d X = Isometry3d::Identity();
+    X.translation().x() = c.x;
+    const Scene small_moves(buildModel(boxMesh(Vector3d(c.h, c.h, c.h), 2)),
+                            {SceneObject{"hollow", Isometry3d::Identity(), buildModel(hollow)}});
+    EXPECT_EQ(small_moves.collides(X, 0.0), c.collides) << "small box mobile, " << c.what;
+    const Scene hollow_moves(
+        buildModel(hollow),
+        {SceneObject{"small", X, buildModel(boxMesh(Vector3d(c.h, c.h, c.h), 2))}});
+    EXPECT_EQ(hollow_moves.collides(Isometry3d::Identity(), 0.0), c.collides)
+        << "hollow box mobile, " << c.what;
+  }
+}
+
 TEST(CollisionOracle, SpheresAgreeBeyondTheirTessellation) {
   Rng rng(62);
   const double r = 0.2;
