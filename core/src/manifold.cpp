@@ -27,7 +27,7 @@ double clampParam(const Parameter& p, double v) {
 
 namespace {
 
-// The pose distance at t once its closed-form parameters are projected (written into t).
+// The pose distance at t once its closed-form parameters are set (written into t).
 double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form, Params* t) {
   return poseDistance(closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t), X);
 }

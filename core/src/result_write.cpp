@@ -22,7 +22,9 @@ class Writer {
  public:
   explicit Writer(std::string& out) : out_(out) {}
   void raw(const char* s) { out_ += s; }
+  // A member's key, after a comma unless it opens its object.
   void key(const char* k) {
+    if (out_.back() != '{') out_ += ',';
     out_ += '"';
     out_ += k;
     out_ += "\":";
@@ -93,21 +95,25 @@ class Writer {
   std::string& out_;
 };
 
-// parameters, position, orientation (x, y, z, w with w ≥ 0), without the closing brace.
+// The orientation as SPEC.md writes it: unit quaternion coefficients (x, y, z, w), w ≥ 0 (one of
+// the two equal quaternions, deterministically).
+Eigen::Vector4d orientationOf(const Isometry3d& X) {
+  Quaterniond q(X.linear());
+  q.normalize();
+  return q.w() < 0 ? Eigen::Vector4d(-q.coeffs()) : Eigen::Vector4d(q.coeffs());
+}
+
+// parameters, position, orientation, without the closing brace.
 void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof) {
   w.raw("{");
   w.key("parameters");
   w.list(dof, [&](int i) { w.number(theta[i]); });
   const Vector3d t = X.translation();
-  w.raw(",");
   w.key("position");
   w.list(3, [&](int i) { w.number(t[i]); });
-  Quaterniond q(X.linear());
-  q.normalize();
-  if (q.w() < 0) q.coeffs() = -q.coeffs();  // one of the two equal quaternions, deterministically
-  w.raw(",");
+  const Eigen::Vector4d q = orientationOf(X);
   w.key("orientation");
-  w.list(4, [&](int i) { w.number(q.coeffs()[i]); });
+  w.list(4, [&](int i) { w.number(q[i]); });
 }
 
 // The message, with the user's constraint ids next to the indices (SPEC: ids are echoed).
@@ -131,10 +137,8 @@ json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
   j["parameters"] = ps;
   const Vector3d t = X.translation();
   j["position"] = {t.x(), t.y(), t.z()};
-  Quaterniond q(X.linear());
-  q.normalize();
-  if (q.w() < 0) q.coeffs() = -q.coeffs();
-  j["orientation"] = {q.x(), q.y(), q.z(), q.w()};
+  const Eigen::Vector4d q = orientationOf(X);
+  j["orientation"] = {q[0], q[1], q[2], q[3]};
   return j;
 }
 
@@ -144,16 +148,13 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
   Writer w(out);
   w.raw("{");
   w.key("relpos");
-  w.raw("1,");
+  w.raw("1");
   w.key("name");
   w.string(problem.name);
-  w.raw(",");
   w.key("status");
   w.string(toString(solution.status));
-  w.raw(",");
   w.key("message");
   w.string(resultMessage(problem, solution));
-  w.raw(",");
   w.key("branches");
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
@@ -164,48 +165,37 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
     w.raw("{");
     w.key("dof");
     w.integer(dof);
-    w.raw(",");
     w.key("rotational_dof");
     m.rotationalDof() >= 0 ? w.integer(m.rotationalDof()) : w.raw("null");
-    w.raw(",");
     w.key("translational_dof");
     m.rotationalDof() >= 0 ? w.integer(m.translationalDof()) : w.raw("null");
-    w.raw(",");
     w.key("manifold");
     w.string(m.describe());
-    w.raw(",");
     w.key("parameters");
     w.list(dof, [&](int i) {
       const Parameter p = m.parameter(i);
       w.raw("{");
       w.key("name");
       w.string(p.name);
-      w.raw(",");
       w.key("kind");
       w.string(toString(p.kind));
-      w.raw(",");
       w.key("min");
       w.number(p.min);
-      w.raw(",");
       w.key("max");
       w.number(p.max);
-      w.raw(",");
       w.key("periodic");
       w.boolean(p.periodic);
       w.raw("}");
     });
     const NearestPose n =
         nearestOnBranch(solution.branches[static_cast<std::size_t>(b)], problem.mobile.pose);
-    w.raw(",");
     w.key("nearest");
     writePose(w, n.pose, n.parameters, dof);
-    w.raw(",");
     w.key("distance");
     w.number(n.distance);
     w.raw("}");
     if (n.distance < best_d) best_d = n.distance, best = b;
     if (opt.samples > 0) {
-      w.raw(",");
       w.key("samples");
       w.list(opt.samples, [&](int) {
         const Params t = sampleParameters(m, n.parameters, opt.window, rng);
@@ -215,21 +205,16 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
     }
     w.raw("}");
   });
-  w.raw(",");
   w.key("best");
   best >= 0 ? w.integer(best) : w.raw("null");
-  w.raw(",");
   w.key("conflicts");
   w.list(static_cast<int>(solution.conflicts.size()),
          [&](int i) { w.integer(solution.conflicts[i]); });
-  w.raw(",");
   w.key("redundant");
   w.list(static_cast<int>(solution.redundant.size()),
          [&](int i) { w.integer(solution.redundant[i]); });
-  w.raw(",");
   w.key("rules");
   w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.rules[i]); });
-  w.raw(",");
   w.key("stats");
   w.raw("{");
   w.key("solve_us");

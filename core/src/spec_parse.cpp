@@ -44,17 +44,18 @@ class Parser {
     return path.empty() ? key : path + "." + key;
   }
 
-  bool number(const json& j, const std::string& path, double* v) {
-    if (!j.is_number()) {
-      error(path, std::string("expected a number, got ") + j.type_name());
-      return false;
-    }
+  // A finite number (the check alone: callers build the path only for the message).
+  static bool finiteNumber(const json& j, double* v) {
+    if (!j.is_number()) return false;
     *v = j.template get<double>();
-    if (!std::isfinite(*v)) {
-      error(path, "not a finite number");
-      return false;
-    }
-    return true;
+    return std::isfinite(*v);
+  }
+
+  bool number(const json& j, const std::string& path, double* v) {
+    if (finiteNumber(j, v)) return true;
+    error(path, j.is_number() ? std::string("not a finite number")
+                              : std::string("expected a number, got ") + j.type_name());
+    return false;
   }
 
   bool vec(const json& j, const std::string& path, int n, double* v) {
@@ -63,14 +64,9 @@ class Parser {
       return false;
     }
     bool ok = true;
-    for (int i = 0; i < n; ++i) {
-      const json& e = j[i];
-      if (e.is_number()) {  // the common case, without building the element's path
-        v[i] = e.template get<double>();
-        if (std::isfinite(v[i])) continue;
-      }
-      ok = number(e, path + "[" + std::to_string(i) + "]", &v[i]) && ok;
-    }
+    for (int i = 0; i < n; ++i)
+      if (!finiteNumber(j[i], &v[i]))
+        ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
     return ok;
   }
 

@@ -85,10 +85,6 @@ unsigned RadialGraspManifold::closedFormParams() const {
   return ((1u << lengths) - 1u) << 1;  // the parameters between ψ and θ
 }
 
-void RadialGraspManifold::projectTail(const Isometry3d& X, Params* th) const {
-  poseWithTail(X, th);
-}
-
 Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
   Params& t = *th;
   const int k_theta = dof() - 1;

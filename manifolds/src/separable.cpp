@@ -23,11 +23,6 @@ Params SeparableManifold::project(const Isometry3d& X) const {
   return theta;
 }
 
-void SeparableManifold::projectTail(const Isometry3d& X, Params* theta) const {
-  const Matrix3d R = rot_.rotation(theta->data());
-  trans_.project(R, X.translation(), theta->data() + rot_.dof());
-}
-
 Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) const {
   Isometry3d Y = Isometry3d::Identity();
   Y.linear() = rot_.rotation(theta->data());

@@ -221,35 +221,33 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
   return rows;
 }
 
+// The point of {x : n[i]·x = h[i], i < m} nearest the origin, x = Nᵀ (N Nᵀ)⁻¹ h, with fixed-size
+// matrices so evaluating a pose never allocates (the rows are independent: the matcher checked).
+Vector3d flatPoint(const Vector3d* n, const double* h, int m) {
+  if (m == 0) return Vector3d::Zero();
+  if (m == 1) return n[0] * (h[0] / n[0].squaredNorm());
+  if (m == 2) {
+    Eigen::Matrix2d G;
+    G << n[0].dot(n[0]), n[0].dot(n[1]), n[1].dot(n[0]), n[1].dot(n[1]);
+    const Eigen::Vector2d l = G.inverse() * Eigen::Vector2d(h[0], h[1]);
+    return l[0] * n[0] + l[1] * n[1];
+  }
+  // Three rows: their one common point, by Cramer's rule in cross products.
+  const Vector3d c12 = n[1].cross(n[2]), c20 = n[2].cross(n[0]), c01 = n[0].cross(n[1]);
+  return (h[0] * c12 + h[1] * c20 + h[2] * c01) / n[0].dot(c12);
+}
+
 // T on every plane at the given range values, and the free directions.
 Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
-  Vector3d h = Vector3d::Zero();
-  for (int i = 0; i < rows.k; ++i) {
-    N.row(i) = rows.n[i].transpose();
+  double h[3];
+  for (int i = 0; i < rows.k; ++i)
     h[i] = rows.h0[i] + (rows.ranged[i] >= 0 ? rows.sign[i] * v[rows.ranged[i]] : 0.0);
-  }
-  // The point of the planes' intersection nearest the origin, T = Nₖᵀ (Nₖ Nₖᵀ)⁻¹ h, with
-  // fixed-size matrices so evaluating a pose never allocates.
-  Vector3d T = Vector3d::Zero();
-  if (rows.k == 3) {
-    // Cramer's rule in cross products: the rows are independent (the matcher checked).
-    const Vector3d c12 = rows.n[1].cross(rows.n[2]), c20 = rows.n[2].cross(rows.n[0]),
-                   c01 = rows.n[0].cross(rows.n[1]);
-    T = (h[0] * c12 + h[1] * c20 + h[2] * c01) / rows.n[0].dot(c12);
-  } else if (rows.k == 2) {
-    const Eigen::Matrix<double, 2, 3> N2 = N.topRows<2>();
-    const Eigen::Matrix2d G = N2 * N2.transpose();
-    T = N2.transpose() * G.inverse() * h.head<2>();
-  } else if (rows.k == 1) {
-    T = rows.n[0] * (h[0] / rows.n[0].squaredNorm());
-  }
   if (rows.k == 2) free[0] = rows.n[0].cross(rows.n[1]).normalized();
   if (rows.k == 1) {
     free[0] = rows.e1;
     free[1] = rows.n[0].cross(rows.e1);
   }
-  return T;
+  return flatPoint(rows.n, h, rows.k);
 }
 
 // The projection of T onto the flat where rows `active` (a bit mask) hold n·x = b.
@@ -259,17 +257,7 @@ Vector3d ontoFlat(const PlaneRows& rows, unsigned active, const double* b, const
   int m = 0;
   for (int i = 0; i < rows.k; ++i)
     if (active & (1u << i)) n[m] = rows.n[i], r[m] = rows.n[i].dot(T) - b[i], ++m;
-  if (m == 0) return T;
-  if (m == 1) return T - n[0] * (r[0] / n[0].squaredNorm());
-  if (m == 2) {
-    Eigen::Matrix2d G;
-    G << n[0].dot(n[0]), n[0].dot(n[1]), n[1].dot(n[0]), n[1].dot(n[1]);
-    const Eigen::Vector2d l = G.inverse() * Eigen::Vector2d(r[0], r[1]);
-    return T - l[0] * n[0] - l[1] * n[1];
-  }
-  // Three independent rows: the point itself (Cramer's rule), whatever T.
-  const Vector3d c12 = n[1].cross(n[2]), c20 = n[2].cross(n[0]), c01 = n[0].cross(n[1]);
-  return T - (r[0] * c12 + r[1] * c20 + r[2] * c01) / n[0].dot(c12);
+  return T - flatPoint(n, r, m);
 }
 
 // The point of the set (exact rows held, ranged rows within their bounds) nearest T: every way
@@ -279,7 +267,7 @@ Vector3d ontoFlat(const PlaneRows& rows, unsigned active, const double* b, const
 // orthogonal rows.)
 Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>& linear,
                        const Vector3d& T) {
-  double lo[3], hi[3];
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   unsigned ranged = 0, exact = 0;
   const Fundamental* by_range[3] = {nullptr, nullptr, nullptr};
   int r = 0;

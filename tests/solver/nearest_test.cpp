@@ -59,8 +59,7 @@ TEST(Nearest, ClosedFormParametersAreTheNearestGivenTheOthers) {
       if (closed == 0u) continue;
       for (int k = 0; k < 20; ++k) {
         Params t = sampleParameters(m, m.project(p.mobile.pose), 0.2, rng);
-        m.projectTail(p.mobile.pose, &t);
-        const double d = poseDistance(m.pose(t), p.mobile.pose);
+        const double d = poseDistance(m.poseWithTail(p.mobile.pose, &t), p.mobile.pose);
         // Moving any closed-form parameter (within its bounds) never brings the pose nearer.
         for (int i = 0; i < m.dof(); ++i) {
           if (!(closed & (1u << i))) continue;

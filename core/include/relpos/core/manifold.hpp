@@ -46,17 +46,13 @@ class Manifold {
   virtual Manifold* copyInto(void* storage) const = 0;
 
   // The nearest-pose search in fewer dimensions: once the other parameters are fixed, the ones in
-  // closedFormParams() (bit i: parameter i) are set by projectTail to those nearest X in closed
-  // form (a separable branch's translation, once its rotation is fixed). Only when that
-  // projection is the exact nearest point; otherwise (the default) every parameter is searched.
+  // closedFormParams() (bit i: parameter i) have a closed form, the values nearest X (a separable
+  // branch's translation, once its rotation is fixed) — only where that is the exact nearest
+  // point; otherwise (the default) every parameter is searched. poseWithTail sets them in theta
+  // and returns pose(theta), sharing the work both need (the rotation).
   virtual unsigned closedFormParams() const { return 0u; }
-  virtual void projectTail(const Isometry3d& X, Params* theta) const {
-    (void)X;
-    (void)theta;
-  }
-  // projectTail then pose, in one: a manifold may share the work (the rotation both need).
   virtual Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const {
-    projectTail(X, theta);
+    (void)X;
     return pose(*theta);
   }
 

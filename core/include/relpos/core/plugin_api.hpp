@@ -23,7 +23,7 @@
 namespace relpos {
 
 // Bumped whenever a type a plugin shares with relpos changes incompatibly (2: Manifold gained
-// the virtual closedFormParams/projectTail, which moves every later vtable slot).
+// the virtual closedFormParams/poseWithTail, which moves every later vtable slot).
 inline constexpr long kPluginAbiVersion = 2;
 
 // The version with a fingerprint of the shared layouts folded in, so a plugin built against other

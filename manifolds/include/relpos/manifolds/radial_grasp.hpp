@@ -34,7 +34,6 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   // Height and radius: for fixed ψ and θ the rotation is fixed and the fingertip moves on a
   // rectangle (radius × height) in the plane through the axis, so clamping is the nearest point.
   unsigned closedFormParams() const override;
-  void projectTail(const Isometry3d& X, Params* theta) const override;
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
 

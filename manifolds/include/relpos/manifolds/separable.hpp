@@ -23,7 +23,6 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   unsigned closedFormParams() const override {
     return trans_.projectsExactly() ? ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u) : 0u;
   }
-  void projectTail(const Isometry3d& X, Params* theta) const override;
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   const RotationPart& rotation() const { return rot_; }

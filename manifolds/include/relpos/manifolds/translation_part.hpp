@@ -55,8 +55,8 @@ struct TranslationPart {
   Vector3d translation(const Matrix3d& R, const double* t) const;
   void project(const Matrix3d& R, const Vector3d& T, double* t) const;
   // Whether project() gives the translation nearest T (for every R): not for an ellipse (its
-  // parameter is affine, not the foot point) nor for ranges clamped along non-orthogonal
-  // directions (an oblique parallelepiped or finite cylinder).
+  // parameter is affine, not the foot point) nor for a finite cylinder cut obliquely (its radius
+  // and height are clamped along directions that are not orthogonal).
   bool projectsExactly() const;
 
  private:
