@@ -78,6 +78,27 @@ void BM_NearestOfEveryBranch(benchmark::State& state) {
 }
 BENCHMARK(BM_NearestOfEveryBranch);
 
+// The same per kind of generated spec (its name's prefix), to see which manifold costs what.
+void BM_NearestByKind(benchmark::State& state, const std::string& prefix) {
+  std::vector<relpos::Problem> ps;
+  std::vector<relpos::Solution> sols;
+  for (const auto& p : problems())
+    if (p.name.rfind(prefix, 0) == 0) {
+      ps.push_back(p);
+      sols.push_back(relpos::solve(p, relpos::builtinRegistry()));
+    }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % ps.size();
+    for (const auto& b : sols[k].branches)
+      benchmark::DoNotOptimize(relpos::nearestOnBranch(b, ps[k].mobile.pose).distance);
+  }
+}
+BENCHMARK_CAPTURE(BM_NearestByKind, cylinder, std::string("cylinder-grasp"));
+BENCHMARK_CAPTURE(BM_NearestByKind, cup, std::string("cup-grasp"));
+BENCHMARK_CAPTURE(BM_NearestByKind, tray, std::string("tray-grasp"));
+BENCHMARK_CAPTURE(BM_NearestByKind, weld, std::string("weld-seam"));
+
 void BM_WholeLine(benchmark::State& state) {
   relpos::Workspace ws;
   relpos::Solution s;

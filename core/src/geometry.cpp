@@ -53,6 +53,13 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
   return std::atan2(s, c);
 }
 
+double bestSpinAbout(const Vector3d& u, const Matrix3d& M) {
+  // trace(R(u, φ) M) = cos φ (tr M − uᵀMu) + sin φ tr([u]× M) + uᵀMu.
+  Matrix3d K;
+  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
+  return std::atan2((K * M).trace(), M.trace() - u.dot(M * u));
+}
+
 bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,
                           const Vector3d& d2, double parallel_tol, Vector3d* foot1,
                           Vector3d* foot2) {

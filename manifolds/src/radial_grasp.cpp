@@ -17,6 +17,9 @@ RadialGraspManifold::RadialGraspManifold(const RadialGraspSpec& spec)
       A_(Isometry3d::Identity()) {
   // z onto σx: a quarter turn about y (σ = +1) or its opposite.
   A_.linear() = axisAngle(Vector3d::UnitY(), spec.sigma * kPi / 2);
+  // The mobile origin in the approach line's frame: on its z axis, Rz(θ) leaves it in place.
+  const Vector3d o = L_inv_.translation();
+  spin_closed_ = o.head<2>().norm() <= 1e-12 * (1.0 + o.norm());
 }
 
 int RadialGraspManifold::dof() const { return 2 + rRanged() + hFree(); }
@@ -82,7 +85,8 @@ Params RadialGraspManifold::project(const Isometry3d& X) const {
 
 unsigned RadialGraspManifold::closedFormParams() const {
   const int lengths = (hFree() ? 1 : 0) + (rRanged() ? 1 : 0);
-  return ((1u << lengths) - 1u) << 1;  // the parameters between ψ and θ
+  const unsigned between = ((1u << lengths) - 1u) << 1;  // the parameters between ψ and θ
+  return spin_closed_ ? between | (1u << (lengths + 1)) : between;
 }
 
 Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
@@ -91,6 +95,11 @@ Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) co
   // X = outer · T(r, 0, z) · inner; X's origin in the frame `outer`, less the part that turns
   // with θ, is what (r, 0, z) must match.
   const Isometry3d outer = F_ * rot(2, t[0]);
+  if (spin_closed_) {
+    // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
+    const Matrix3d P = outer.linear() * A_.linear();
+    t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), L_inv_.linear() * X.linear().transpose() * P);
+  }
   const Isometry3d inner = A_ * rot(2, t[k_theta]) * L_inv_;
   const Vector3d p =
       outer.linear().transpose() * (X.translation() - outer.translation()) - inner.translation();

@@ -25,15 +25,6 @@ const char* toString(RotationKind k) {
 
 namespace {
 
-// The φ maximising trace(R(u, φ) M): the rotation about u closest to the one M encodes.
-double bestAngleAbout(const Vector3d& u, const Matrix3d& M) {
-  Matrix3d K;
-  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
-  double a = M.trace() - u.dot(M * u);
-  double b = (K * M).trace();
-  return std::atan2(b, a);
-}
-
 // Rotation about w by (sigma - alpha): takes u_m to a vector at angle alpha from u_f
 // (PMF eq. 4, with w = u_m × u_f or any common perpendicular when they are parallel).
 Matrix3d coneBase(const Vector3d& u_m, const Vector3d& u_f, double alpha) {
@@ -183,7 +174,7 @@ void RotationPart::project(const Matrix3d& R, double* t) const {
     case RotationKind::kFixed:
       return;
     case RotationKind::kOneParallel:
-      t[0] = bestAngleAbout(u_f, R0 * R.transpose());
+      t[0] = bestSpinAbout(u_f, R0 * R.transpose());
       return;
     case RotationKind::kOneAngleRange: {
       // α: the angle of R u_m from u_f, clamped to the range; then as for one angle.
@@ -201,7 +192,7 @@ void RotationPart::project(const Matrix3d& R, double* t) const {
                  ? 0.0
                  : std::atan2(w0p.cross(xp).dot(u_f), w0p.dot(xp));
       Matrix3d R1 = axisAngle(u_f, t[0]) * R0;
-      t[1] = bestAngleAbout(u_m, R.transpose() * R1);
+      t[1] = bestSpinAbout(u_m, R.transpose() * R1);
       return;
     }
     case RotationKind::kTwoAngle: {

@@ -2,6 +2,16 @@
 
 namespace relpos::manifolds {
 
+SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPart& t)
+    : rot_(r), trans_(t) {
+  if (!trans_.projectsExactly()) return;
+  closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
+  const bool spins =
+      rot_.kind == RotationKind::kOneAngle || rot_.kind == RotationKind::kOneAngleRange;
+  spin_closed_ = spins && trans_.invariantUnderSpin(rot_.u_m);
+  if (spin_closed_) closed_form_ |= 1u << 1;  // θ is the second rotation parameter of both
+}
+
 Parameter SeparableManifold::parameter(int i) const {
   const int r = rot_.dof();
   return i < r ? rot_.parameter(i) : trans_.parameter(i - r);
@@ -25,7 +35,16 @@ Params SeparableManifold::project(const Isometry3d& X) const {
 
 Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) const {
   Isometry3d Y = Isometry3d::Identity();
-  Y.linear() = rot_.rotation(theta->data());
+  if (spin_closed_) {
+    // R = P R(u_m, θ) with P the rotation at θ = 0.
+    Params& t = *theta;
+    t[1] = 0.0;
+    const Matrix3d P = rot_.rotation(t.data());
+    t[1] = bestSpinAbout(rot_.u_m, X.linear().transpose() * P);
+    Y.linear() = P * axisAngle(rot_.u_m, t[1]);
+  } else {
+    Y.linear() = rot_.rotation(theta->data());
+  }
   trans_.project(Y.linear(), X.translation(), theta->data() + rot_.dof());
   Y.translation() = trans_.translation(Y.linear(), theta->data() + rot_.dof());
   return Y;

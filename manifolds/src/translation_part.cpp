@@ -342,6 +342,56 @@ bool TranslationPart::projectsExactly() const {
   }
 }
 
+namespace {
+
+// Within rounding of an exact zero, relative to the vector's length: a feature off the axis by
+// more than that moves with the spin, and the spin is then searched like any parameter.
+bool alongAxis(const Vector3d& v, const Vector3d& u) {
+  return v.cross(u).norm() <= 1e-12 * (1.0 + v.norm());
+}
+
+bool mobileGeometryInvariant(const Fundamental& f, const Vector3d& u) {
+  switch (f.kind) {
+    case FundamentalKind::kPointPoint:
+      return alongAxis(f.p, u);  // stored with the point mobile
+    case FundamentalKind::kPointLine:
+      return f.point_side == Side::kMobile ? alongAxis(f.p, u)
+                                           : alongAxis(f.d, u) && alongAxis(f.q, u);
+    case FundamentalKind::kPointPlane:
+      return f.point_side == Side::kMobile ? alongAxis(f.p, u) : alongAxis(f.d, u);
+    default:
+      return false;  // not a point-based translational constraint: no claim
+  }
+}
+
+}  // namespace
+
+bool TranslationPart::invariantUnderSpin(const Vector3d& u) const {
+  switch (kind) {
+    case TranslationKind::kFree:
+      return true;
+    case TranslationKind::kPlanes:
+      for (const Fundamental& f : linear)
+        if (!mobileGeometryInvariant(f, u)) return false;
+      return true;
+    case TranslationKind::kPoint:
+    case TranslationKind::kLine:
+    case TranslationKind::kPlane:
+    case TranslationKind::kSphere:
+    case TranslationKind::kCylinder:
+    case TranslationKind::kShell:
+    case TranslationKind::kThickCylinder:
+    case TranslationKind::kSlab:
+      return mobileGeometryInvariant(c1, u);
+    case TranslationKind::kLineOfPlanes:
+    case TranslationKind::kPointOfLinePlane:
+    case TranslationKind::kEllipse:
+    case TranslationKind::kBoundedCylinder:
+      return mobileGeometryInvariant(c1, u) && mobileGeometryInvariant(c2, u);
+  }
+  return false;
+}
+
 Parameter TranslationPart::rangeParameter() const {
   return Parameter{"distance", ParamKind::kLength, c1.lo, c1.hi, false};
 }

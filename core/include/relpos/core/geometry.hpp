@@ -35,6 +35,10 @@ double angleBetween(const Vector3d& a, const Vector3d& b);
 // Geodesic angle between two rotations.
 double rotationDistance(const Matrix3d& a, const Matrix3d& b);
 
+// The φ maximising trace(R(u, φ) M). With M = Xᵀ P (or Q Xᵀ P), the spin R = P R(u, φ) (or
+// P R(u, φ) Q) nearest the rotation X: the geodesic angle falls as the trace grows.
+double bestSpinAbout(const Vector3d& u, const Matrix3d& M);
+
 // Clamp to [-1, 1] before acos.
 inline double clampUnit(double c) { return c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c); }
 

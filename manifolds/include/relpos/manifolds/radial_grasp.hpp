@@ -33,6 +33,8 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   Params project(const Isometry3d& X) const override;
   // Height and radius: for fixed ψ and θ the rotation is fixed and the fingertip moves on a
   // rectangle (radius × height) in the plane through the axis, so clamping is the nearest point.
+  // And θ when the mobile origin lies on the approach line: the spin then moves only the
+  // rotation, and the nearest spin is closed form.
   unsigned closedFormParams() const override;
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
@@ -45,6 +47,7 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   double planeValueOf(double z) const;
   RadialGraspSpec s_;
   Isometry3d F_, L_inv_, A_;
+  bool spin_closed_ = false;
 };
 
 }  // namespace relpos::manifolds

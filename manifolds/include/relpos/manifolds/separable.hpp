@@ -11,7 +11,7 @@ namespace relpos::manifolds {
 
 class SeparableManifold final : public ManifoldBase<SeparableManifold> {
  public:
-  SeparableManifold(const RotationPart& r, const TranslationPart& t) : rot_(r), trans_(t) {}
+  SeparableManifold(const RotationPart& r, const TranslationPart& t);
   const char* typeName() const override { return "separable"; }
   int dof() const override { return rot_.dof() + trans_.dof(); }
   int rotationalDof() const override { return rot_.dof(); }
@@ -19,10 +19,10 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
-  // The translation parameters, when its projection is exact.
-  unsigned closedFormParams() const override {
-    return trans_.projectsExactly() ? ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u) : 0u;
-  }
+  // The translation parameters, when its projection is exact; and then also the spin θ about
+  // the mobile axis u_m of a one-angle rotation (R = … R(u_m, θ)) when the translation set does
+  // not move with it: θ only turns the rotation, and the nearest spin is closed form.
+  unsigned closedFormParams() const override { return closed_form_; }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   const RotationPart& rotation() const { return rot_; }
@@ -31,6 +31,8 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
  private:
   RotationPart rot_;
   TranslationPart trans_;
+  unsigned closed_form_ = 0u;
+  bool spin_closed_ = false;  // bit 1 of closed_form_: θ of kOneAngle / kOneAngleRange
 };
 
 }  // namespace relpos::manifolds

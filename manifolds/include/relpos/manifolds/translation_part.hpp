@@ -58,6 +58,10 @@ struct TranslationPart {
   // parameter is affine, not the foot point) nor for a finite cylinder cut obliquely (its radius
   // and height are clamped along directions that are not orthogonal).
   bool projectsExactly() const;
+  // Whether the translation set, for given parameters, is the same for R and R·R(u, θ) (every θ):
+  // every mobile point on the line through the mobile origin along u, every mobile line along
+  // it, every mobile plane normal to it. The spin about u then moves only the rotation.
+  bool invariantUnderSpin(const Vector3d& u) const;
 
  private:
   Parameter rangeParameter() const;
