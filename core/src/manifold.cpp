@@ -211,7 +211,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // A converged Newton step leaves an error of about its length squared (< 1e-8): the pattern
   // search only has to confirm it.
   g_phase = 3;
-  if (converged) best_step = std::min(best_step, 1e-7);
+  if (converged) best_step = std::min(best_step, 2e-8);
   best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);

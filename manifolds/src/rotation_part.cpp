@@ -25,13 +25,16 @@ const char* toString(RotationKind k) {
 
 namespace {
 
-// Rotation about w by (sigma - alpha): takes u_m to a vector at angle alpha from u_f
-// (PMF eq. 4, with w = u_m × u_f or any common perpendicular when they are parallel).
+// The axis w of the rotation by (angle(u_m, u_f) − α) that takes u_m to a vector at angle α from
+// u_f (PMF eq. 4, with w = u_m × u_f or any common perpendicular when they are parallel).
+Vector3d coneAxis(const Vector3d& u_m, const Vector3d& u_f) {
+  const Vector3d w = u_m.cross(u_f);
+  const double s = w.norm();
+  return s > 1e-12 ? Vector3d(w / s) : anyPerpendicular(u_m);
+}
+
 Matrix3d coneBase(const Vector3d& u_m, const Vector3d& u_f, double alpha) {
-  Vector3d w = u_m.cross(u_f);
-  double s = w.norm();
-  w = s > 1e-12 ? Vector3d(w / s) : anyPerpendicular(u_m);
-  return axisAngle(w, angleBetween(u_m, u_f) - alpha);
+  return axisAngle(coneAxis(u_m, u_f), angleBetween(u_m, u_f) - alpha);
 }
 
 }  // namespace
@@ -71,6 +74,8 @@ RotationPart RotationPart::oneAngleRange(const Vector3d& u_m, const Vector3d& u_
   r.u_f = u_f;
   r.alpha_lo = lo;
   r.alpha_hi = hi;
+  r.cone_axis = coneAxis(u_m, u_f);
+  r.cone_beta = angleBetween(u_m, u_f);
   return r;
 }
 
@@ -164,9 +169,15 @@ Matrix3d RotationPart::rotation(const double* t) const {
       return axisAngle(Vector3d::UnitZ(), t[2]) * axisAngle(Vector3d::UnitY(), t[1]) *
              axisAngle(Vector3d::UnitX(), t[0]);
     case RotationKind::kOneAngleRange:
-      return axisAngle(u_f, t[0]) * coneBase(u_m, u_f, t[2]) * axisAngle(u_m, t[1]);
+      return spinBase(t) * axisAngle(u_m, t[1]);
   }
   return Matrix3d::Identity();
+}
+
+Matrix3d RotationPart::spinBase(const double* t) const {
+  if (kind == RotationKind::kOneAngleRange)
+    return axisAngle(u_f, t[0]) * axisAngle(cone_axis, cone_beta - t[2]);
+  return axisAngle(u_f, t[0]) * R0;  // kOneAngle
 }
 
 void RotationPart::project(const Matrix3d& R, double* t) const {

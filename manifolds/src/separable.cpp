@@ -38,15 +38,13 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
   if (spin_closed_) {
     // R = P R(u_m, θ) with P the rotation at θ = 0.
     Params& t = *theta;
-    t[1] = 0.0;
-    const Matrix3d P = rot_.rotation(t.data());
+    const Matrix3d P = rot_.spinBase(t.data());
     t[1] = bestSpinAbout(rot_.u_m, X.linear().transpose() * P);
     Y.linear() = P * axisAngle(rot_.u_m, t[1]);
   } else {
     Y.linear() = rot_.rotation(theta->data());
   }
-  trans_.project(Y.linear(), X.translation(), theta->data() + rot_.dof());
-  Y.translation() = trans_.translation(Y.linear(), theta->data() + rot_.dof());
+  Y.translation() = trans_.projectAndPlace(Y.linear(), X.translation(), theta->data() + rot_.dof());
   return Y;
 }
 

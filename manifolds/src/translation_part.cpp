@@ -492,31 +492,46 @@ Vector3d TranslationPart::translation(const Matrix3d& R, const double* t) const 
   return Vector3d::Zero();
 }
 
+// The nearest point of the set, then its range values (its heights over the planes) and its free
+// coordinates; returns the translation at those parameters.
+Vector3d TranslationPart::projectOntoPlanes(const Matrix3d& R, const Vector3d& T, double* t) const {
+  const PlaneRows rows = planeRowsFor(linear, R);
+  const Vector3d N = nearestOnRows(rows, linear, T);
+  const int free = 3 - rows.k;
+  double* v = t + free;
+  int r = 0;
+  for (const Fundamental& f : linear) {
+    if (f.exact()) continue;
+    for (int i = 0; i < rows.k; ++i)
+      if (rows.ranged[i] == r) {
+        const double x = rows.sign[i] * (rows.n[i].dot(N) - rows.h0[i]);
+        v[r] = std::min(f.hi, std::max(f.lo, x));
+      }
+    ++r;
+  }
+  Vector3d dirs[2];
+  Vector3d P = planesPoint(rows, v, dirs);
+  const Vector3d foot = P;
+  for (int j = 0; j < free; ++j) {
+    t[j] = dirs[j].dot(T - foot);
+    P += t[j] * dirs[j];
+  }
+  return P;
+}
+
+Vector3d TranslationPart::projectAndPlace(const Matrix3d& R, const Vector3d& T, double* t) const {
+  if (kind == TranslationKind::kPlanes) return projectOntoPlanes(R, T, t);
+  project(R, T, t);
+  return translation(R, t);
+}
+
 void TranslationPart::project(const Matrix3d& R, const Vector3d& T, double* t) const {
   if (kind == TranslationKind::kFree) {
     t[0] = T.x(), t[1] = T.y(), t[2] = T.z();
     return;
   }
   if (kind == TranslationKind::kPlanes) {
-    // The nearest point of the set, then its range values (its heights over the planes) and its
-    // free coordinates.
-    const PlaneRows rows = planeRowsFor(linear, R);
-    const Vector3d N = nearestOnRows(rows, linear, T);
-    const int free = 3 - rows.k;
-    double* v = t + free;
-    int r = 0;
-    for (const Fundamental& f : linear) {
-      if (f.exact()) continue;
-      for (int i = 0; i < rows.k; ++i)
-        if (rows.ranged[i] == r) {
-          const double x = rows.sign[i] * (rows.n[i].dot(N) - rows.h0[i]);
-          v[r] = std::min(f.hi, std::max(f.lo, x));
-        }
-      ++r;
-    }
-    Vector3d dirs[2];
-    const Vector3d P = planesPoint(rows, v, dirs);
-    for (int j = 0; j < free; ++j) t[j] = dirs[j].dot(T - P);
+    projectOntoPlanes(R, T, t);
     return;
   }
   if (kind == TranslationKind::kBoundedCylinder) {

@@ -78,7 +78,8 @@ class MixedManifoldBase : public ManifoldBase<Derived> {
   int translationalDof() const override { return -1; }
 };
 
-inline constexpr std::size_t kManifoldStorage = 1024;
+// The largest built-in type (a revolved separable manifold) with room to spare for plugins'.
+inline constexpr std::size_t kManifoldStorage = 1152;
 
 class ManifoldHolder {
  public:

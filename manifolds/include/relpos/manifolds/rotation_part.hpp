@@ -27,12 +27,17 @@ struct RotationPart {
   double sign = 1.0;
   double phi_lo = -kPi, phi_hi = kPi;
   bool phi_periodic = true;
-  // kOneAngleRange: the bounds of the angle between R u_m and u_f.
+  // kOneAngleRange: the bounds of the angle between R u_m and u_f; the cone's base turns about
+  // cone_axis (u_m × u_f, or a perpendicular) by cone_beta − α, cone_beta = angle(u_m, u_f).
   double alpha_lo = 0.0, alpha_hi = kPi;
+  Vector3d cone_axis = Vector3d::UnitX();
+  double cone_beta = 0.0;
 
   int dof() const;
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
+  // kOneAngle, kOneAngleRange: the rotation before the spin, R(θ) = spinBase(θ) R(u_m, θ[1]).
+  Matrix3d spinBase(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
 
   static RotationPart fixed(const Matrix3d& R);

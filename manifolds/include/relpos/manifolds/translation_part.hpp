@@ -54,6 +54,9 @@ struct TranslationPart {
   Parameter parameter(int i) const;
   Vector3d translation(const Matrix3d& R, const double* t) const;
   void project(const Matrix3d& R, const Vector3d& T, double* t) const;
+  // project(), then translation(R, t): the nearest-pose search does both per evaluation, and for
+  // plane rows the second reuses the rows the first built.
+  Vector3d projectAndPlace(const Matrix3d& R, const Vector3d& T, double* t) const;
   // Whether project() gives the translation nearest T (for every R): not for an ellipse (its
   // parameter is affine, not the foot point) nor for a finite cylinder cut obliquely (its radius
   // and height are clamped along directions that are not orthogonal).
@@ -65,6 +68,7 @@ struct TranslationPart {
 
  private:
   Parameter rangeParameter() const;
+  Vector3d projectOntoPlanes(const Matrix3d& R, const Vector3d& T, double* t) const;
   double clampRange(double v) const { return v < c1.lo ? c1.lo : (v > c1.hi ? c1.hi : v); }
   // T = S_f − R S_m: a mobile point on a fixed plane moves with +n, a fixed point on a mobile
   // plane puts T on the −n side.
