@@ -94,7 +94,7 @@ class FastJson::Iterator {
   Iterator(const FastJson* doc, std::int32_t index) : doc_(doc), index_(index) {}
   Ref operator*() const { return Ref(doc_, index_); }
   Ref value() const { return Ref(doc_, index_); }
-  std::string key() const { return std::string(doc_->nodes_[index_].key); }
+  std::string_view key() const { return doc_->nodes_[index_].key; }
   Iterator& operator++() {
     index_ = doc_->nodes_[index_].next;
     return *this;

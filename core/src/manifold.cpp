@@ -23,15 +23,9 @@ double clampParam(const Parameter& p, double v) {
   if (p.periodic) return v;
   return std::min(std::max(v, p.min), p.max);
 }
-}  // namespace
-
-long g_evals[4];
-int g_phase;
-namespace {
 
 // The pose distance at t once its closed-form parameters are set (written into t).
 double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form, Params* t) {
-  ++g_evals[g_phase];
   return poseDistance(closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t), X);
 }
 
@@ -176,7 +170,6 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     if (par[i].kind == ParamKind::kAngle && n_angles < 3 && !(fixed & (1u << i)))
       angles[n_angles++] = i;
   }
-  g_phase = 0;
   constexpr int kGrid = 4;
   Params grid_best = proj;
   double grid_d = std::numeric_limits<double>::infinity();
@@ -196,7 +189,6 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     if (d < grid_d) grid_d = d, grid_best = t;
   }
   // Both starts to a coarse step, then the better one to the end.
-  g_phase = 1;
   constexpr double kCoarse = 3e-2, kFine = 1e-8;
   double proj_step = 0.25, grid_step = 0.25;
   Params best = patternSearch(m, X, par, proj, &proj_d, &proj_step, kCoarse);
@@ -205,12 +197,10 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     Params other = patternSearch(m, X, par, grid_best, &grid_d, &grid_step, kCoarse);
     if (grid_d < best_d - 1e-12) best = other, best_d = grid_d, best_step = grid_step;
   }
-  g_phase = 2;
   bool converged = false;
   best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged);
   // A converged Newton step leaves an error of about its length squared (< 1e-8): the pattern
   // search only has to confirm it.
-  g_phase = 3;
   if (converged) best_step = std::min(best_step, 2e-8);
   best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
   for (int i = 0; i < n; ++i)

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "fast_json.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -15,6 +16,27 @@ namespace {
 // ordered_json keeps the spec's own order of features (messages list them as the user wrote them).
 using json = nlohmann::ordered_json;
 
+// A JSON path ("constraints[2].fixed"), spelled out only when a message needs it: each level
+// holds its parent and its key or index, so descending into a valid spec builds no strings.
+class Path {
+ public:
+  Path(const char* root_key) : key_(root_key) {}  // NOLINT: "" is the document itself
+  Path(const Path& parent, std::string_view key) : parent_(&parent), key_(key) {}
+  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index), indexed_(true) {}
+  std::string str() const {
+    std::string s = parent_ != nullptr ? parent_->str() : std::string();
+    if (indexed_) return s + "[" + std::to_string(index_) + "]";
+    if (!s.empty()) s += '.';
+    return s.append(key_);
+  }
+
+ private:
+  const Path* parent_ = nullptr;
+  std::string_view key_;
+  std::size_t index_ = 0;
+  bool indexed_ = false;
+};
+
 // The checks, over either document type: nlohmann's, or FastJson's for the common case.
 template <typename Json>
 class Parser {
@@ -23,25 +45,21 @@ class Parser {
 
   Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
 
-  void error(const std::string& path, const std::string& msg) {
-    out_.errors.push_back({path, msg});
+  void error(const Path& path, const std::string& msg) {
+    out_.errors.push_back({path.str(), msg});
   }
-  void warn(const std::string& path, const std::string& msg) {
-    out_.warnings.push_back({path, msg});
+  void warn(const Path& path, const std::string& msg) {
+    out_.warnings.push_back({path.str(), msg});
   }
 
-  void unknownFields(const json& obj, const std::string& path,
+  void unknownFields(const json& obj, const Path& path,
                      std::initializer_list<const char*> known) {
     if (!obj.is_object()) return;
     for (auto it = obj.begin(); it != obj.end(); ++it) {
       bool ok = false;
       for (const char* k : known) ok = ok || it.key() == k;
-      if (!ok) warn(join(path, it.key()), "unknown field (ignored)");
+      if (!ok) warn(Path(path, it.key()), "unknown field (ignored)");
     }
-  }
-
-  static std::string join(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
   }
 
   // A finite number (the check alone: callers build the path only for the message).
@@ -51,14 +69,14 @@ class Parser {
     return std::isfinite(*v);
   }
 
-  bool number(const json& j, const std::string& path, double* v) {
+  bool number(const json& j, const Path& path, double* v) {
     if (finiteNumber(j, v)) return true;
     error(path, j.is_number() ? std::string("not a finite number")
                               : std::string("expected a number, got ") + j.type_name());
     return false;
   }
 
-  bool vec(const json& j, const std::string& path, int n, double* v) {
+  bool vec(const json& j, const Path& path, int n, double* v) {
     if (!j.is_array() || static_cast<int>(j.size()) != n) {
       error(path, "expected an array of " + std::to_string(n) + " numbers");
       return false;
@@ -66,37 +84,37 @@ class Parser {
     bool ok = true;
     for (int i = 0; i < n; ++i)
       if (!finiteNumber(j[i], &v[i]))
-        ok = number(j[i], path + "[" + std::to_string(i) + "]", &v[i]) && ok;
+        ok = number(j[i], Path(path, static_cast<std::size_t>(i)), &v[i]) && ok;
     return ok;
   }
 
-  bool vec3(const json& j, const std::string& path, Vector3d* v) {
+  bool vec3(const json& j, const Path& path, Vector3d* v) {
     double a[3];
     if (!vec(j, path, 3, a)) return false;
     *v = Vector3d(a[0], a[1], a[2]);
     return true;
   }
 
-  bool direction(const json& parent, const std::string& path, const char* key, Vector3d* v) {
+  bool direction(const json& parent, const Path& path, const char* key, Vector3d* v) {
     if (!parent.contains(key)) {
-      error(join(path, key), "missing");
+      error(Path(path, key), "missing");
       return false;
     }
-    if (!vec3(parent[key], join(path, key), v)) return false;
+    if (!vec3(parent[key], Path(path, key), v)) return false;
     if (v->norm() < 1e-12) {
-      error(join(path, key), "zero-length direction");
+      error(Path(path, key), "zero-length direction");
       return false;
     }
     v->normalize();
     return true;
   }
 
-  bool point(const json& parent, const std::string& path, const char* key, Vector3d* v) {
+  bool point(const json& parent, const Path& path, const char* key, Vector3d* v) {
     if (!parent.contains(key)) {
-      error(join(path, key), "missing");
+      error(Path(path, key), "missing");
       return false;
     }
-    return vec3(parent[key], join(path, key), v);
+    return vec3(parent[key], Path(path, key), v);
   }
 
   double angleUnit() const { return deg_ ? kPi / 180.0 : 1.0; }
@@ -115,7 +133,7 @@ class Parser {
     }
   }
 
-  bool pose(const json& j, const std::string& path, Isometry3d* X) {
+  bool pose(const json& j, const Path& path, Isometry3d* X) {
     *X = Isometry3d::Identity();
     if (!j.is_object()) {
       error(path, "expected a pose object");
@@ -129,7 +147,7 @@ class Parser {
         return false;
       }
       const json& m = j["matrix"];
-      const std::string mp = join(path, "matrix");
+      const Path mp(path, "matrix");
       if (!m.is_array() || m.size() != 4) {
         error(mp, "expected 4 rows of 4 numbers");
         return false;
@@ -137,7 +155,7 @@ class Parser {
       Eigen::Matrix4d M;
       for (int r = 0; r < 4; ++r) {
         double row[4];
-        if (!vec(m[r], mp + "[" + std::to_string(r) + "]", 4, row)) return false;
+        if (!vec(m[r], Path(mp, static_cast<std::size_t>(r)), 4, row)) return false;
         for (int c = 0; c < 4; ++c) M(r, c) = row[c];
       }
       Matrix3d R = M.topLeftCorner<3, 3>();
@@ -157,7 +175,7 @@ class Parser {
     }
     if (j.contains("position")) {
       Vector3d p;
-      if (vec3(j["position"], join(path, "position"), &p))
+      if (vec3(j["position"], Path(path, "position"), &p))
         X->translation() = p;
       else
         ok = false;
@@ -168,17 +186,17 @@ class Parser {
     }
     if (j.contains("orientation")) {
       double q[4];
-      if (!vec(j["orientation"], join(path, "orientation"), 4, q)) return false;
+      if (!vec(j["orientation"], Path(path, "orientation"), 4, q)) return false;
       Quaterniond quat(q[3], q[0], q[1], q[2]);
       if (quat.norm() < 1e-12) {
-        error(join(path, "orientation"), "zero quaternion");
+        error(Path(path, "orientation"), "zero quaternion");
         return false;
       }
       X->linear() = quat.normalized().toRotationMatrix();
     }
     if (j.contains("rpy")) {
       double r[3];
-      if (!vec(j["rpy"], join(path, "rpy"), 3, r)) return false;
+      if (!vec(j["rpy"], Path(path, "rpy"), 3, r)) return false;
       const double k = angleUnit();
       X->linear() = (Eigen::AngleAxisd(r[2] * k, Vector3d::UnitZ()) *
                      Eigen::AngleAxisd(r[1] * k, Vector3d::UnitY()) *
@@ -188,16 +206,16 @@ class Parser {
     return ok;
   }
 
-  bool feature(const json& j, const std::string& path, Feature* f) {
+  bool feature(const json& j, const Path& path, Feature* f) {
     if (!j.is_object() || j.size() != 1) {
       error(path,
             "expected an object with exactly one of \"point\", \"line\", \"plane\", "
             "\"cylinder\"");
       return false;
     }
-    const std::string kind = j.begin().key();
+    const std::string kind(j.begin().key());
     const json& b = j.begin().value();
-    const std::string bp = join(path, kind);
+    const Path bp(path, kind);
     Vector3d p, d;
     if (kind == "point") {
       if (!vec3(b, bp, &p)) return false;
@@ -222,10 +240,10 @@ class Parser {
     if (kind == "cylinder") {
       double r = 0;
       if (!b.contains("radius")) {
-        error(join(bp, "radius"), "missing");
+        error(Path(bp, "radius"), "missing");
         ok = false;
-      } else if (number(b["radius"], join(bp, "radius"), &r) && r <= 0) {
-        error(join(bp, "radius"), "radius must be positive");
+      } else if (number(b["radius"], Path(bp, "radius"), &r) && r <= 0) {
+        error(Path(bp, "radius"), "radius must be positive");
         ok = false;
       }
       if (ok) *f = Feature::makeCylinder(p, d, r);
@@ -235,38 +253,38 @@ class Parser {
     return ok;
   }
 
-  void object(const json& j, const std::string& path, ObjectSpec* o, bool features_required) {
+  void object(const json& j, const Path& path, ObjectSpec* o, bool features_required) {
     if (!j.is_object()) return error(path, "expected an object");
     unknownFields(j, path, {"name", "pose", "features", "mesh"});
-    o->name = path;
+    o->name = path.str();
     if (j.contains("name")) {
       if (j["name"].is_string())
         o->name = j["name"].template get<std::string>();
       else
-        error(join(path, "name"), "expected a string");
+        error(Path(path, "name"), "expected a string");
     }
-    if (j.contains("pose")) pose(j["pose"], join(path, "pose"), &o->pose);
+    if (j.contains("pose")) pose(j["pose"], Path(path, "pose"), &o->pose);
     if (j.contains("mesh")) {
       if (j["mesh"].is_string())
         o->mesh = j["mesh"].template get<std::string>();
       else
-        error(join(path, "mesh"), "expected a file name");
+        error(Path(path, "mesh"), "expected a file name");
     }
     if (!j.contains("features")) {
-      if (features_required) error(join(path, "features"), "missing");
+      if (features_required) error(Path(path, "features"), "missing");
       return;
     }
     const json& fs = j["features"];
-    if (!fs.is_object()) return error(join(path, "features"), "expected an object");
+    if (!fs.is_object()) return error(Path(path, "features"), "expected an object");
     for (auto it = fs.begin(); it != fs.end(); ++it) {
       Feature f;
-      if (feature(it.value(), join(join(path, "features"), it.key()), &f))
-        o->features.push_back({it.key(), f});
+      if (feature(it.value(), Path(Path(path, "features"), it.key()), &f))
+        o->features.push_back({std::string(it.key()), f});
     }
   }
 
   // Resolves a feature name, including "name.axis" for a cylinder's axis.
-  bool resolve(const json& j, const std::string& path, const ObjectSpec& o, const char* role,
+  bool resolve(const json& j, const Path& path, const ObjectSpec& o, const char* role,
                std::string* name, Feature* f) {
     if (!j.is_string()) {
       error(path, "expected a feature name");
@@ -298,7 +316,7 @@ class Parser {
   }
 
   // Parses one constraint; its problems mention the user's "id" when it has one.
-  void constraint(const json& j, const std::string& path, const Problem& pb, InputConstraint* c,
+  void constraint(const json& j, const Path& path, const Problem& pb, InputConstraint* c,
                   bool* ok_out) {
     const std::size_t first_error = out_.errors.size();
     constraintFields(j, path, pb, c, ok_out);
@@ -307,7 +325,7 @@ class Parser {
         out_.errors[i].message += " (constraint id '" + c->id + "')";
   }
 
-  void constraintFields(const json& j, const std::string& path, const Problem& pb,
+  void constraintFields(const json& j, const Path& path, const Problem& pb,
                         InputConstraint* c, bool* ok_out) {
     *ok_out = false;
     if (!j.is_object()) return error(path, "expected an object");
@@ -319,35 +337,35 @@ class Parser {
       if (j["id"].is_string()) {
         c->id = j["id"].template get<std::string>();
       } else {
-        error(join(path, "id"), "expected a string");
+        error(Path(path, "id"), "expected a string");
         ok = false;
       }
     }
     const ConstraintType* type = nullptr;
     if (!j.contains("type")) {
-      error(join(path, "type"), "missing");
+      error(Path(path, "type"), "missing");
       ok = false;
     } else if (!j["type"].is_string()) {
-      error(join(path, "type"), "expected a string");
+      error(Path(path, "type"), "expected a string");
       ok = false;
     } else {
       c->type = j["type"].template get<std::string>();
       type = reg_.constraintType(c->type);
       if (!type) {
-        error(join(path, "type"),
+        error(Path(path, "type"),
               "unknown constraint type '" + c->type + "' (load the plugin that provides it)");
         ok = false;
       }
     }
     for (const char* role : {"fixed", "mobile"}) {
       if (!j.contains(role)) {
-        error(join(path, role), "missing");
+        error(Path(path, role), "missing");
         ok = false;
       }
     }
-    bool have_f = j.contains("fixed") && resolve(j["fixed"], join(path, "fixed"), pb.fixed, "fixed",
+    bool have_f = j.contains("fixed") && resolve(j["fixed"], Path(path, "fixed"), pb.fixed, "fixed",
                                                  &c->fixed_name, &c->fixed);
-    bool have_m = j.contains("mobile") && resolve(j["mobile"], join(path, "mobile"), pb.mobile,
+    bool have_m = j.contains("mobile") && resolve(j["mobile"], Path(path, "mobile"), pb.mobile,
                                                   "mobile", &c->mobile_name, &c->mobile);
     ok = ok && have_f && have_m;
     if (type && have_f && have_m && !type->accepts_pair(c->fixed.kind, c->mobile.kind)) {
@@ -366,7 +384,7 @@ class Parser {
     bool vals_ok = true;
     auto num = [&](const char* key, double* v) {
       if (!j.contains(key)) return false;
-      if (!number(j[key], join(path, key), v)) {
+      if (!number(j[key], Path(path, key), v)) {
         vals_ok = false;
         return false;
       }
@@ -381,14 +399,14 @@ class Parser {
       vals_ok = false;
     }
     if (type && type->takes_value && !c->has_value && !has_min && !has_max && vals_ok) {
-      error(join(path, "value"), "missing (a '" + c->type +
+      error(Path(path, "value"), "missing (a '" + c->type +
                                      "' constraint needs \"value\" or "
                                      "\"min\"/\"max\")");
       vals_ok = false;
     }
     if (type && !type->takes_value) {
       for (const char* key : {"value", "min", "max"})
-        if (j.contains(key)) warn(join(path, key), "ignored: '" + c->type + "' takes no value");
+        if (j.contains(key)) warn(Path(path, key), "ignored: '" + c->type + "' takes no value");
       c->has_value = true;
       c->value = c->min = c->max = 0.0;
     }
@@ -405,19 +423,19 @@ class Parser {
       else if (o == "either")
         c->orientation = Orientation::kEither;
       else {
-        error(join(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\"");
+        error(Path(path, "orientation"), "expected \"aligned\", \"opposed\" or \"either\"");
         vals_ok = false;
       }
     }
     if (j.contains("parallel")) {
       if (!j["parallel"].is_boolean()) {
-        error(join(path, "parallel"), "expected true or false");
+        error(Path(path, "parallel"), "expected true or false");
         vals_ok = false;
       } else {
         c->parallel = j["parallel"].template get<bool>();
         if (!(c->type == "distance" && c->fixed.kind == FeatureKind::kLine &&
               c->mobile.kind == FeatureKind::kLine))
-          warn(join(path, "parallel"), "only meaningful for a line-line distance (ignored)");
+          warn(Path(path, "parallel"), "only meaningful for a line-line distance (ignored)");
       }
     }
     if (ok && vals_ok && type && type->check) {
@@ -429,7 +447,7 @@ class Parser {
         if (colon == std::string::npos)
           error(path, p);
         else
-          error(join(path, p.substr(0, colon)), p.substr(colon + 2));
+          error(Path(path, p.substr(0, colon)), p.substr(colon + 2));
         vals_ok = false;
       }
     }
@@ -464,12 +482,13 @@ class Parser {
     if (j.contains("mobile")) object(j["mobile"], "mobile", &pb.mobile, true);
     if (j.contains("obstacles")) {
       const json& obs = j["obstacles"];
+      const Path obstacles_path("obstacles");
       if (!obs.is_array())
         error("obstacles", "expected an array");
       else
         for (std::size_t i = 0; i < obs.size(); ++i) {
           ObjectSpec o;
-          object(obs[i], "obstacles[" + std::to_string(i) + "]", &o, false);
+          object(obs[i], Path(obstacles_path, i), &o, false);
           pb.obstacles.push_back(o);
         }
     }
@@ -479,10 +498,11 @@ class Parser {
       else
         for (std::size_t i = 0; i < j["plugins"].size(); ++i)
           if (!j["plugins"][i].is_string())
-            error("plugins[" + std::to_string(i) + "]", "expected a path (string)");
+            error(Path(Path("plugins"), i), "expected a path (string)");
     }
     if (j.contains("constraints")) {
       const json& cs = j["constraints"];
+      const Path constraints_path("constraints");
       if (!cs.is_array()) {
         error("constraints", "expected an array");
       } else {
@@ -490,7 +510,7 @@ class Parser {
         for (std::size_t i = 0; i < cs.size(); ++i) {
           InputConstraint c;
           bool ok = false;
-          constraint(cs[i], "constraints[" + std::to_string(i) + "]", pb, &c, &ok);
+          constraint(cs[i], Path(constraints_path, i), pb, &c, &ok);
           if (ok) pb.constraints.push_back(c);
         }
       }
