@@ -84,10 +84,13 @@ Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* pa
 // Newton steps on the searched parameters from `best`, derivatives by central differences of
 // step h; a step is taken only when it lowers the distance. Near a smooth minimum each step
 // gains digits where a pattern search gains one bit per sweep. *converged: the last step taken
-// was shorter than 10 h (the pattern search may then go on from a small step).
+// was shorter than 10 h, or, after a step was taken, a step shorter than 100 h no longer lowers
+// the distance (the model's gain is below the distance's rounding: the minimum is reached to
+// double precision). *last_step: the length of the last step taken (0: none).
 Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par, Params best,
-                    double* best_d, double h, bool* converged) {
+                    double* best_d, double h, bool* converged, double* last_step) {
   *converged = false;
+  *last_step = 0.0;
   const unsigned fixed = m.closedFormParams();
   int idx[kMaxDof], k = 0;
   for (int i = 0; i < m.dof(); ++i)
@@ -132,6 +135,7 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
     if (llt.info() != Eigen::Success) break;
     Eigen::Matrix<double, kMaxDof, 1> dx = llt.solve(-g);
     // The full step, else shorter ones (far from the minimum the quadratic model overshoots).
+    const double full_step = dx.head(k).norm();
     Params t;
     double d = *best_d;
     for (int cut = 0; cut < 4; ++cut, dx *= 0.25) {
@@ -140,10 +144,14 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
       d = distanceWithTail(m, X, fixed, &t);  // t gets its closed-form parameters
       if (d < *best_d - 1e-15) break;
     }
-    if (!(d < *best_d - 1e-15)) break;
+    if (!(d < *best_d - 1e-15)) {
+      if (iter > 0 && full_step < 100 * h) *converged = true;
+      break;
+    }
     best = t;
     *best_d = d;
-    if (dx.head(k).norm() < 10 * h) {
+    *last_step = dx.head(k).norm();
+    if (*last_step < 10 * h) {
       *converged = true;
       break;
     }
@@ -188,8 +196,11 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     const double d = distanceWithTail(m, X, fixed, &t);
     if (d < grid_d) grid_d = d, grid_best = t;
   }
-  // Both starts to a coarse step, then the better one to the end.
-  constexpr double kCoarse = 3e-2, kFine = 1e-8;
+  // Both starts to a coarse step (the grid's start wins about a third of the time, often from
+  // behind, so both are needed), then the better one to the end: Newton, and the pattern search
+  // only where Newton did not converge, from about its last step (a kink of the metric: a
+  // bound, or a zero translation or rotation distance).
+  constexpr double kCoarse = 1e-1, kFine = 1e-8;
   double proj_step = 0.25, grid_step = 0.25;
   Params best = patternSearch(m, X, par, proj, &proj_d, &proj_step, kCoarse);
   double best_d = proj_d, best_step = proj_step;
@@ -198,11 +209,10 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     if (grid_d < best_d - 1e-12) best = other, best_d = grid_d, best_step = grid_step;
   }
   bool converged = false;
-  best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged);
-  // A converged Newton step leaves an error of about its length squared (< 1e-8): the pattern
-  // search only has to confirm it.
-  if (converged) best_step = std::min(best_step, 2e-8);
-  best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
+  double last_step = 0.0;
+  best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged, &last_step);
+  if (last_step > 0.0) best_step = std::min(best_step, 4 * last_step);
+  if (!converged) best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;
