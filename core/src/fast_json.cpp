@@ -1,5 +1,6 @@
 #include "fast_json.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 namespace relpos::detail {
@@ -20,12 +21,6 @@ bool FastJson::parse(std::string_view text) {
 
 FastJson::Ref FastJson::root() const { return Ref(this, nodes_.empty() ? -1 : 0); }
 
-void FastJson::skipSpace() {
-  while (pos_ < text_.size() &&
-         (text_[pos_] == ' ' || text_[pos_] == '\n' || text_[pos_] == '\t' || text_[pos_] == '\r'))
-    ++pos_;
-}
-
 // A string without escapes and of printable ASCII only (the rest is nlohmann's to decode).
 bool FastJson::string(std::string_view* out) {
   const std::size_t start = ++pos_;  // after the opening quote
@@ -43,39 +38,67 @@ bool FastJson::string(std::string_view* out) {
 }
 
 // A number in JSON's grammar: -? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?
+//
+// Clinger's fast path while scanning: when the digits make an integer m ≤ 2^53 and the decimal
+// exponent e has |e| ≤ 22, both m and 10^|e| are exact doubles, so m·10^e (or m/10^-e) rounds
+// once, correctly: the double from_chars would give. Longer mantissas (most of the 17-digit
+// numbers a program writes) and larger exponents go to from_chars.
 bool FastJson::number(double* out) {
   const std::size_t start = pos_;
-  auto digit = [&] { return pos_ < text_.size() && text_[pos_] >= '0' && text_[pos_] <= '9'; };
-  auto digits = [&] {
-    if (!digit()) return false;
-    while (digit()) ++pos_;
-    return true;
+  const std::size_t n = text_.size();
+  auto digit = [&] { return pos_ < n && text_[pos_] >= '0' && text_[pos_] <= '9'; };
+  std::uint64_t m = 0;
+  int significant = 0;  // digits of m from its first non-zero one
+  int e10 = 0;          // minus the fraction's digits, plus the exponent
+  auto mantissaDigit = [&] {
+    const int d = text_[pos_++] - '0';
+    if (significant > 0 || d != 0) ++significant;
+    if (significant <= 19) m = 10 * m + static_cast<std::uint64_t>(d);
   };
-  if (pos_ < text_.size() && text_[pos_] == '-') ++pos_;
-  if (pos_ < text_.size() && text_[pos_] == '0') {
+  const bool negative = pos_ < n && text_[pos_] == '-';
+  if (negative) ++pos_;
+  if (pos_ < n && text_[pos_] == '0') {
     ++pos_;
-  } else if (!digits()) {
-    return false;
+  } else {
+    if (!digit()) return false;
+    while (digit()) mantissaDigit();
   }
-  if (pos_ < text_.size() && text_[pos_] == '.') {
+  bool integral = true;
+  if (pos_ < n && text_[pos_] == '.') {
+    integral = false;
     ++pos_;
-    if (!digits()) return false;
+    if (!digit()) return false;
+    while (digit()) mantissaDigit(), --e10;
   }
-  if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+  if (pos_ < n && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
+    integral = false;
     ++pos_;
-    if (pos_ < text_.size() && (text_[pos_] == '+' || text_[pos_] == '-')) ++pos_;
-    if (!digits()) return false;
+    const bool minus = pos_ < n && text_[pos_] == '-';
+    if (pos_ < n && (text_[pos_] == '+' || text_[pos_] == '-')) ++pos_;
+    if (!digit()) return false;
+    int e = 0;
+    while (digit()) e = std::min(e * 10 + (text_[pos_++] - '0'), 100000);
+    e10 += minus ? -e : e;
+  }
+  // nlohmann keeps "-0" as the integer 0, which reads back as +0.0.
+  if (m == 0 && significant == 0) {
+    *out = negative && !integral ? -0.0 : 0.0;
+    return true;
+  }
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  if (significant <= 19 && m <= (std::uint64_t{1} << 53) && e10 >= -22 && e10 <= 22) {
+    const double v = static_cast<double>(m);
+    *out = e10 >= 0 ? v * kPow10[e10] : v / kPow10[-e10];
+    if (negative) *out = -*out;
+    return true;
   }
   const char* first = text_.data() + start;
   const char* last = text_.data() + pos_;
   const auto r = std::from_chars(first, last, *out);
   // Out of range (nlohmann reports it) or not all read: not ours.
-  if (r.ec != std::errc() || r.ptr != last) return false;
-  // nlohmann keeps "-0" as the integer 0, which reads back as +0.0.
-  if (*out == 0.0 &&
-      std::string_view(first, pos_ - start).find_first_of(".eE") == std::string_view::npos)
-    *out = 0.0;
-  return true;
+  return r.ec == std::errc() && r.ptr == last;
 }
 
 // One value at pos_: its node index, or -1 when it is not read here.
@@ -113,7 +136,7 @@ std::int32_t FastJson::value() {
           if (pos_ >= text_.size() || text_[pos_] != '"' || !string(&key)) return -1;
           // Duplicate keys: nlohmann keeps the last value in the first place; not ours.
           for (std::int32_t k = nodes_[index].first; k >= 0; k = nodes_[k].next)
-            if (nodes_[k].key == key) return -1;
+            if (sameKey(nodes_[k].key, key)) return -1;
           skipSpace();
           if (pos_ >= text_.size() || text_[pos_] != ':') return -1;
           ++pos_;
@@ -151,11 +174,6 @@ std::int32_t FastJson::value() {
   return index;
 }
 
-const FastJson::Node& FastJson::Ref::node() const {
-  static const Node null_node;
-  return index_ < 0 ? null_node : doc_->nodes_[static_cast<std::size_t>(index_)];
-}
-
 const char* FastJson::Ref::type_name() const {
   switch (type()) {
     case Type::kNull:
@@ -185,25 +203,5 @@ std::size_t FastJson::Ref::size() const {
       return 1;
   }
 }
-
-std::int32_t FastJson::Ref::member(std::string_view key) const {
-  if (!is_object()) return -1;
-  for (std::int32_t k = node().first; k >= 0; k = doc_->nodes_[static_cast<std::size_t>(k)].next)
-    if (doc_->nodes_[static_cast<std::size_t>(k)].key == key) return k;
-  return -1;
-}
-
-FastJson::Ref FastJson::Ref::operator[](std::size_t i) const {
-  if (!is_array()) return Ref(doc_, -1);
-  std::int32_t k = node().first;
-  for (; k >= 0 && i > 0; --i) k = doc_->nodes_[static_cast<std::size_t>(k)].next;
-  return Ref(doc_, k);
-}
-
-FastJson::Iterator FastJson::Ref::begin() const {
-  return Iterator(doc_, is_array() || is_object() ? node().first : -1);
-}
-
-FastJson::Iterator FastJson::Ref::end() const { return Iterator(doc_, -1); }
 
 }  // namespace relpos::detail

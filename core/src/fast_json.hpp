@@ -42,7 +42,19 @@ class FastJson {
   std::int32_t value();
   bool string(std::string_view* out);
   bool number(double* out);
-  void skipSpace();
+  void skipSpace() {
+    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\n' ||
+                                   text_[pos_] == '\t' || text_[pos_] == '\r'))
+      ++pos_;
+  }
+  const Node& at(std::int32_t i) const { return nodes_[static_cast<std::size_t>(i)]; }
+  // Keys are a few letters: a loop beats a call to memcmp.
+  static bool sameKey(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i] != b[i]) return false;
+    return true;
+  }
 
   std::string_view text_;
   std::size_t pos_ = 0;
@@ -94,9 +106,9 @@ class FastJson::Iterator {
   Iterator(const FastJson* doc, std::int32_t index) : doc_(doc), index_(index) {}
   Ref operator*() const { return Ref(doc_, index_); }
   Ref value() const { return Ref(doc_, index_); }
-  std::string_view key() const { return doc_->nodes_[index_].key; }
+  std::string_view key() const { return doc_->at(index_).key; }
   Iterator& operator++() {
-    index_ = doc_->nodes_[index_].next;
+    index_ = doc_->at(index_).next;
     return *this;
   }
   bool operator!=(const Iterator& o) const { return index_ != o.index_; }
@@ -106,6 +118,31 @@ class FastJson::Iterator {
   const FastJson* doc_;
   std::int32_t index_;
 };
+
+inline const FastJson::Node& FastJson::Ref::node() const {
+  static const Node null_node;
+  return index_ < 0 ? null_node : doc_->at(index_);
+}
+
+inline std::int32_t FastJson::Ref::member(std::string_view key) const {
+  if (!is_object()) return -1;
+  for (std::int32_t k = node().first; k >= 0; k = doc_->at(k).next)
+    if (sameKey(doc_->at(k).key, key)) return k;
+  return -1;
+}
+
+inline FastJson::Ref FastJson::Ref::operator[](std::size_t i) const {
+  if (!is_array()) return Ref(doc_, -1);
+  std::int32_t k = node().first;
+  for (; k >= 0 && i > 0; --i) k = doc_->at(k).next;
+  return Ref(doc_, k);
+}
+
+inline FastJson::Iterator FastJson::Ref::begin() const {
+  return Iterator(doc_, is_array() || is_object() ? node().first : -1);
+}
+
+inline FastJson::Iterator FastJson::Ref::end() const { return Iterator(doc_, -1); }
 
 // Like nlohmann, asking a value for the wrong type is an error, not a default.
 template <>

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 
 #include "relpos/core/solver.hpp"
@@ -158,7 +159,9 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
   w.key("branches");
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
-  std::mt19937_64 rng(opt.seed);
+  // Seeding the generator costs more than writing a branch: only when samples are asked for.
+  std::optional<std::mt19937_64> rng;
+  if (opt.samples > 0) rng.emplace(opt.seed);
   w.list(static_cast<int>(solution.branches.size()), [&](int b) {
     const Manifold& m = *solution.branches[static_cast<std::size_t>(b)].manifold;
     const int dof = m.dof();
@@ -198,7 +201,7 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
     if (opt.samples > 0) {
       w.key("samples");
       w.list(opt.samples, [&](int) {
-        const Params t = sampleParameters(m, n.parameters, opt.window, rng);
+        const Params t = sampleParameters(m, n.parameters, opt.window, *rng);
         writePose(w, m.pose(t), t, dof);
         w.raw("}");
       });

@@ -1,7 +1,9 @@
 // Spec parsing (SPEC.md §1). Collects every problem it finds rather than stopping at the first,
 // so a user fixes a spec in one round.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -53,11 +55,12 @@ class Parser {
   }
 
   void unknownFields(const json& obj, const Path& path,
-                     std::initializer_list<const char*> known) {
+                     std::initializer_list<std::string_view> known) {
     if (!obj.is_object()) return;
     for (auto it = obj.begin(); it != obj.end(); ++it) {
+      const std::string_view key = it.key();
       bool ok = false;
-      for (const char* k : known) ok = ok || it.key() == k;
+      for (std::string_view k : known) ok = ok || key == k;
       if (!ok) warn(Path(path, it.key()), "unknown field (ignored)");
     }
   }
@@ -597,7 +600,12 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
 
 std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir) {
   std::vector<std::string> out;
-  if (text.find("\"plugins\"") == std::string::npos) return out;  // no need to parse
+  // No need to parse a spec without the key (most): a Horspool search skips ahead by up to the
+  // key's length where find() would stop at every quote of the document.
+  static const std::string key = "\"plugins\"";
+  static const std::boyer_moore_horspool_searcher<std::string::const_iterator> searcher(
+      key.begin(), key.end());
+  if (std::search(text.begin(), text.end(), searcher) == text.end()) return out;
   const json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("plugins") || !j["plugins"].is_array())
     return out;

@@ -4,6 +4,7 @@
 // replaced; a value swapped for an escape, a non-ASCII name, a duplicate key, an odd number).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -122,6 +123,34 @@ TEST(SpecReader, MutatedSpecsParseAsWithTheJsonLibrary) {
     ++checked;
   }
   EXPECT_EQ(checked, 4000);
+}
+
+// The reader converts short numbers itself (Clinger's fast path) and the rest with from_chars:
+// every form must give the double nlohmann gives, bit for bit (summary() prints 17 digits).
+TEST(SpecReader, NumbersReadAsTheJsonLibraryReadsThem) {
+  std::mt19937_64 rng(2026);
+  std::vector<std::string> numbers = {"0", "-0", "0.0", "-0.0", "0e5", "-0e-5", "1", "-1",
+                                      "0.1", "0.30000000000000004", "9007199254740992",
+                                      "9007199254740993", "9007199254740991.5", "1e22", "1e23",
+                                      "1e-22", "1e-23", "123456789e-22", "4.9e-324", "2.2e-308",
+                                      "1.7976931348623157e308", "0.000001", "1E+2", "12.5e-1",
+                                      "1234567890123456789", "12345678901234567890",
+                                      "0.1234567890123456789012"};
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-30, 30), digits(1, 19);
+  char buf[64];
+  for (int k = 0; k < 3000; ++k) {
+    const double v = unit(rng) * std::pow(10.0, exponent(rng));
+    const char* forms[] = {"%.*g", "%.*e", "%.*f"};
+    std::snprintf(buf, sizeof buf, forms[k % 3], k % 3 == 2 ? digits(rng) % 12 : digits(rng), v);
+    numbers.push_back(buf);
+  }
+  for (const std::string& n : numbers)
+    expectSame(R"({"fixed": {"pose": {"position": [)" + n + R"(, 0, 0]}, "features": {"p":
+               {"point": [0, 0, 0]}}}, "mobile": {"features": {"q": {"point": [0, 0, 0]}}},
+               "constraints": [{"type": "distance", "fixed": "p", "mobile": "q", "value": )" +
+                   n + "}]}",
+               n);
 }
 
 TEST(SpecReader, DuplicateKeysAndEscapesGoToTheJsonLibrary) {
