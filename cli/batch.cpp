@@ -96,10 +96,19 @@ std::string specName(const Item& item) {
   return item.name;
 }
 
+// The worker's reusable state: the solver's workspace and solution, and a line buffer that has
+// grown to a line's size once (writing into a fresh string would reallocate it a few times a line).
+struct WorkerState {
+  Workspace ws;
+  Solution sol;
+  std::string line;
+};
+
 // Parses and solves one spec into its result line (every problem of an invalid spec joined into
 // its message, "SOURCE: json.path: what").
 Outcome run(const Item& item, const Args& a, const Registry& reg, collision::MeshCache& cache,
-            Workspace& ws, Solution& sol) {
+            WorkerState& state) {
+  Solution& sol = state.sol;
   const auto t0 = Clock::now();
   Outcome out;
   ParseResult parsed;
@@ -114,11 +123,12 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
     out.line = invalidLine(out.name, joined(item.source, parsed.errors)).dump();
   } else {
     const Problem& pb = *parsed.problem;
-    solve(pb, reg, SolverOptions(), ws, sol);
+    solve(pb, reg, SolverOptions(), state.ws, sol);
     out.name = pb.name;
     out.status = toString(sol.status);
     if (!a.collision) {
-      writeResultLine(pb, sol, a.result, out.line);  // no JSON tree: the common, fast case
+      writeResultLine(pb, sol, a.result, state.line);  // no JSON tree: the common, fast case
+      out.line = state.line;
     } else {
       nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
@@ -214,13 +224,12 @@ int cmdBatch(const Args& a, const Registry& reg) {
   std::atomic<std::size_t> next_item{0};
   collision::MeshCache cache;
   auto worker = [&] {
-    Workspace ws;
-    Solution sol;
+    WorkerState state;
     for (;;) {
       if (g_interrupted.load()) return;
       const std::size_t i = next_item.fetch_add(1);
       if (i >= items.size()) return;
-      outcomes[i] = run(items[i], a, reg, cache, ws, sol);
+      outcomes[i] = run(items[i], a, reg, cache, state);
       done[i].store(true, std::memory_order_release);
     }
   };

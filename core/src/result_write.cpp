@@ -2,7 +2,11 @@
 // building a JSON tree only to print it cost more than solving and parsing together. The text is
 // what nlohmann's dump() prints for the same document (same field order, number format and
 // escaping; result_line_test checks it byte for byte), so resultToJson is simply its parse.
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -19,81 +23,110 @@ using json = nlohmann::ordered_json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+// Appends into a string used as a raw buffer (sized ahead, trimmed at the end): a line is a few
+// hundred short pieces, and std::string's append is an out-of-line call each. The text is final
+// when the Writer goes out of scope.
 class Writer {
  public:
-  explicit Writer(std::string& out) : out_(out) {}
-  void raw(const char* s) { out_ += s; }
+  explicit Writer(std::string& out) : out_(out) {
+    out_.resize(std::max<std::size_t>(out_.capacity(), 512));
+  }
+  ~Writer() { out_.resize(n_); }
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+
+  template <std::size_t N>
+  void raw(const char (&s)[N]) {
+    put(s, N - 1);
+  }
   // A member's key, after a comma unless it opens its object.
-  void key(const char* k) {
-    if (out_.back() != '{') out_ += ',';
-    out_ += '"';
-    out_ += k;
-    out_ += "\":";
+  template <std::size_t N>
+  void key(const char (&k)[N]) {
+    room(N + 3);
+    if (out_[n_ - 1] != '{') out_[n_++] = ',';
+    out_[n_++] = '"';
+    put(k, N - 1);
+    put("\":", 2);
   }
   // nlohmann's float format (shortest round-trip digits); non-finite values are null.
   void number(double v) {
-    if (!std::isfinite(v)) {
-      out_ += "null";
-      return;
-    }
-    char buf[64];
-    char* end = nlohmann::detail::to_chars(buf, buf + sizeof buf, v);
-    out_.append(buf, end);
+    if (!std::isfinite(v)) return raw("null");
+    room(32);  // nlohmann's to_chars writes at most 24 characters for a double
+    char* first = &out_[n_];
+    n_ += static_cast<std::size_t>(nlohmann::detail::to_chars(first, first + 32, v) - first);
   }
-  void integer(long v) { out_ += std::to_string(v); }
-  void boolean(bool v) { out_ += v ? "true" : "false"; }
+  void integer(long v) {
+    room(24);
+    char* first = &out_[n_];
+    n_ += static_cast<std::size_t>(std::to_chars(first, first + 24, v).ptr - first);
+  }
+  void boolean(bool v) { v ? raw("true") : raw("false"); }
   void string(const std::string& s) { string(s.data(), s.size()); }
   void string(const char* s) { string(s, std::char_traits<char>::length(s)); }
   void string(const char* s, std::size_t n) {
-    out_ += '"';
+    put('"');
     for (std::size_t i = 0; i < n; ++i) {
       const unsigned char c = static_cast<unsigned char>(s[i]);
       switch (c) {
         case '"':
-          out_ += "\\\"";
+          raw("\\\"");
           break;
         case '\\':
-          out_ += "\\\\";
+          raw("\\\\");
           break;
         case '\b':
-          out_ += "\\b";
+          raw("\\b");
           break;
         case '\f':
-          out_ += "\\f";
+          raw("\\f");
           break;
         case '\n':
-          out_ += "\\n";
+          raw("\\n");
           break;
         case '\r':
-          out_ += "\\r";
+          raw("\\r");
           break;
         case '\t':
-          out_ += "\\t";
+          raw("\\t");
           break;
         default:
           if (c < 0x20) {
             char esc[8];
             std::snprintf(esc, sizeof esc, "\\u%04x", c);
-            out_ += esc;
+            put(esc, 6);
           } else {
-            out_ += static_cast<char>(c);
+            put(static_cast<char>(c));
           }
       }
     }
-    out_ += '"';
+    put('"');
   }
   template <typename F>
   void list(int n, F&& each) {
-    out_ += '[';
+    put('[');
     for (int i = 0; i < n; ++i) {
-      if (i) out_ += ',';
+      if (i) put(',');
       each(i);
     }
-    out_ += ']';
+    put(']');
   }
 
  private:
+  void room(std::size_t k) {
+    if (n_ + k > out_.size()) out_.resize(2 * (n_ + k));
+  }
+  void put(char c) {
+    room(1);
+    out_[n_++] = c;
+  }
+  void put(const char* s, std::size_t k) {
+    room(k);
+    std::memcpy(&out_[n_], s, k);
+    n_ += k;
+  }
+
   std::string& out_;
+  std::size_t n_ = 0;
 };
 
 // The orientation as SPEC.md writes it: unit quaternion coefficients (x, y, z, w), w ≥ 0 (one of
