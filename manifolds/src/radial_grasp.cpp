@@ -92,17 +92,23 @@ unsigned RadialGraspManifold::closedFormParams() const {
 Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
   Params& t = *th;
   const int k_theta = dof() - 1;
-  // X = outer · T(r, 0, z) · inner; X's origin in the frame `outer`, less the part that turns
-  // with θ, is what (r, 0, z) must match.
-  const Isometry3d outer = F_ * rot(2, t[0]);
-  if (spin_closed_) {
-    // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
-    const Matrix3d P = outer.linear() * A_.linear();
-    t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), L_inv_.linear() * X.linear().transpose() * P);
-  }
-  const Isometry3d inner = A_ * rot(2, t[k_theta]) * L_inv_;
-  const Vector3d p =
-      outer.linear().transpose() * (X.translation() - outer.translation()) - inner.translation();
+  // X = outer · T(r, 0, z) · inner with outer = F Rz(ψ) and inner = A_σ Rz(θ) L⁻¹; X's origin in
+  // the frame `outer`, less the part that turns with θ, is what (r, 0, z) must match. In 3×3
+  // pieces (the search calls this tens of times a branch): Rz(ψ) only turns F's first two
+  // columns, and A_σ has no translation.
+  const Matrix3d& F = F_.linear();
+  const double c = std::cos(t[0]), s = std::sin(t[0]);
+  Matrix3d outer;
+  outer.col(0) = c * F.col(0) + s * F.col(1);
+  outer.col(1) = c * F.col(1) - s * F.col(0);
+  outer.col(2) = F.col(2);
+  const Matrix3d P = outer * A_.linear();
+  const Matrix3d& Q = L_inv_.linear();
+  // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
+  if (spin_closed_) t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), Q * X.linear().transpose() * P);
+  const Matrix3d spin = axisAngle(Vector3d::UnitZ(), t[k_theta]);
+  const Vector3d inner_t = A_.linear() * (spin * L_inv_.translation());
+  const Vector3d p = outer.transpose() * (X.translation() - F_.translation()) - inner_t;
   int k = 1;
   double h = s_.h_lo, r = s_.r_lo;
   if (hFree()) {
@@ -112,8 +118,8 @@ Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) co
   }
   if (rRanged()) t[k] = r = std::min(s_.r_hi, std::max(s_.r_lo, p.x()));
   Isometry3d Y = Isometry3d::Identity();
-  Y.linear() = outer.linear() * inner.linear();
-  Y.translation() = outer * (Vector3d(r, 0.0, axisHeightOf(h)) + inner.translation());
+  Y.linear() = P * (spin * Q);
+  Y.translation() = F_.translation() + outer * (Vector3d(r, 0.0, axisHeightOf(h)) + inner_t);
   return Y;
 }
 

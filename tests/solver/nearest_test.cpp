@@ -101,7 +101,10 @@ TEST_P(NearestOn, ClosedFormParametersAreTheNearestGivenTheOthers) {
       if (closed == 0u) continue;
       for (int k = 0; k < 20; ++k) {
         Params t = sampleParameters(m, m.project(p.mobile.pose), 0.2, rng);
-        const double d = poseDistance(m.poseWithTail(p.mobile.pose, &t), p.mobile.pose);
+        const Isometry3d Y = m.poseWithTail(p.mobile.pose, &t);
+        const double d = poseDistance(Y, p.mobile.pose);
+        // The pose it returns is the branch's pose at the parameters it filled in.
+        ASSERT_LT(poseDistance(Y, m.pose(t)), 1e-12) << p.name << " " << m.describe();
         // Moving any closed-form parameter (within its bounds) never brings the pose nearer.
         for (int i = 0; i < m.dof(); ++i) {
           if (!(closed & (1u << i))) continue;
