@@ -279,6 +279,7 @@ class Parser {
     }
     const json& fs = j["features"];
     if (!fs.is_object()) return error(Path(path, "features"), "expected an object");
+    o->features.reserve(fs.size());
     for (auto it = fs.begin(); it != fs.end(); ++it) {
       Feature f;
       if (feature(it.value(), Path(Path(path, "features"), it.key()), &f))
@@ -510,11 +511,13 @@ class Parser {
         error("constraints", "expected an array");
       } else {
         if (cs.empty()) warn("constraints", "no constraints: every pose is a solution");
-        for (std::size_t i = 0; i < cs.size(); ++i) {
+        pb.constraints.reserve(cs.size());
+        std::size_t i = 0;
+        for (auto it = cs.begin(); it != cs.end(); ++it, ++i) {
           InputConstraint c;
           bool ok = false;
-          constraint(cs[i], Path(constraints_path, i), pb, &c, &ok);
-          if (ok) pb.constraints.push_back(c);
+          constraint(*it, Path(constraints_path, i), pb, &c, &ok);
+          if (ok) pb.constraints.push_back(std::move(c));
         }
       }
     }
