@@ -17,6 +17,7 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <vector>
 
 #include "cli.hpp"
 #include "relpos/core/solver.hpp"
@@ -37,7 +38,6 @@ struct Item {
 };
 
 struct Outcome {
-  std::string line;
   std::string name, status;
   std::vector<int> dofs;
   double solve_us = 0.0, total_us = 0.0;
@@ -96,16 +96,16 @@ std::string specName(const Item& item) {
   return item.name;
 }
 
-// The worker's reusable state: the solver's workspace and solution, and a line buffer that has
-// grown to a line's size once (writing into a fresh string would reallocate it a few times a line).
+// The worker's reusable state: the solver's workspace and solution, and the line being written
+// (a buffer that has grown to a line's size once).
 struct WorkerState {
   Workspace ws;
   Solution sol;
   std::string line;
 };
 
-// Parses and solves one spec into its result line (every problem of an invalid spec joined into
-// its message, "SOURCE: json.path: what").
+// Parses and solves one spec: its result line into state.line (every problem of an invalid spec
+// joined into its message, "SOURCE: json.path: what"), the rest for the summary.
 Outcome run(const Item& item, const Args& a, const Registry& reg, collision::MeshCache& cache,
             WorkerState& state) {
   Solution& sol = state.sol;
@@ -120,7 +120,7 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
   if (!parsed.problem) {
     out.name = specName(item);
     out.status = "invalid";
-    out.line = invalidLine(out.name, joined(item.source, parsed.errors)).dump();
+    state.line = invalidLine(out.name, joined(item.source, parsed.errors)).dump();
   } else {
     const Problem& pb = *parsed.problem;
     solve(pb, reg, SolverOptions(), state.ws, sol);
@@ -128,7 +128,6 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
     out.status = toString(sol.status);
     if (!a.collision) {
       writeResultLine(pb, sol, a.result, state.line);  // no JSON tree: the common, fast case
-      out.line = state.line;
     } else {
       nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
@@ -136,7 +135,7 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
         result = invalidLine(pb.name, joined(item.source, errors));
         out.status = "invalid";
       }
-      out.line = result.dump();
+      state.line = result.dump();
     }
     if (out.status != "invalid")
       for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
@@ -206,8 +205,12 @@ int cmdBatch(const Args& a, const Registry& reg) {
   const std::vector<Item> items = collectItems(a.positional[0]);
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
 
+  // A large buffer: the lines of a fast batch are a stream of ~100 MB/s, and the default buffer
+  // would cost a system call every few lines. (libstdc++ takes the buffer only before open().)
+  std::vector<char> file_buffer(std::size_t{1} << 20);
   std::ofstream file;
   if (!a.out.empty()) {
+    file.rdbuf()->pubsetbuf(file_buffer.data(), static_cast<std::streamsize>(file_buffer.size()));
     file.open(a.out, std::ios::binary | std::ios::trunc);
     if (!file) throw UsageError("cannot write '" + a.out + "'");
   }
@@ -222,6 +225,13 @@ int cmdBatch(const Args& a, const Registry& reg) {
   std::unique_ptr<std::atomic<bool>[]> done(new std::atomic<bool>[items.size()]);
   for (std::size_t i = 0; i < items.size(); ++i) done[i].store(false);
   std::atomic<std::size_t> next_item{0};
+  // Finished lines wait in a ring of reusable buffers: line i in slot i % kSlots, once line
+  // i − kSlots is written. The buffers keep their capacity, so after the first lap no line is
+  // allocated or freed; a writer freeing what workers allocated made both wait on glibc's arena
+  // locks. A worker more than kSlots lines ahead of the writer waits for it.
+  constexpr std::size_t kSlots = 4096;
+  std::vector<std::string> slots(std::min(kSlots, items.size()));
+  std::atomic<std::size_t> written{0};
   collision::MeshCache cache;
   auto worker = [&] {
     WorkerState state;
@@ -230,6 +240,11 @@ int cmdBatch(const Args& a, const Registry& reg) {
       const std::size_t i = next_item.fetch_add(1);
       if (i >= items.size()) return;
       outcomes[i] = run(items[i], a, reg, cache, state);
+      while (i >= written.load(std::memory_order_acquire) + kSlots) {
+        if (g_interrupted.load()) return;
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+      }
+      slots[i % kSlots].assign(state.line);
       done[i].store(true, std::memory_order_release);
     }
   };
@@ -238,35 +253,34 @@ int cmdBatch(const Args& a, const Registry& reg) {
   for (int k = 0; k < jobs; ++k) threads.emplace_back(worker);
 
   // Write in order: line i as soon as lines 0..i are finished.
-  std::size_t written = 0;
   auto last_draw = Clock::now();
   auto writeReady = [&] {
-    while (written < items.size() && done[written].load(std::memory_order_acquire)) {
-      out << outcomes[written].line << '\n';
-      outcomes[written].line.clear();
-      outcomes[written].line.shrink_to_fit();
-      ++written;
+    std::size_t w = written.load();
+    while (w < items.size() && done[w].load(std::memory_order_acquire)) {
+      out << slots[w % kSlots] << '\n';
+      written.store(++w, std::memory_order_release);
     }
   };
-  while (written < items.size() && !g_interrupted.load()) {
+  while (written.load() < items.size() && !g_interrupted.load()) {
     writeReady();
     if (progress && Clock::now() - last_draw > std::chrono::milliseconds(100)) {
-      drawProgress(written, items.size(), std::chrono::duration<double>(Clock::now() - t0).count());
+      drawProgress(written.load(), items.size(),
+                   std::chrono::duration<double>(Clock::now() - t0).count());
       last_draw = Clock::now();
     }
-    if (written < items.size()) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (written.load() < items.size()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   for (auto& t : threads) t.join();
   writeReady();  // after an interruption: every line finished before it, still in order
   out.flush();
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   if (progress) {
-    drawProgress(written, items.size(), seconds);
+    drawProgress(written.load(), items.size(), seconds);
     std::fputc('\n', stderr);
   }
   std::signal(SIGINT, previous);
-  const bool interrupted = written < items.size();
-  printSummary(outcomes, written, seconds, jobs, interrupted);
+  const bool interrupted = written.load() < items.size();
+  printSummary(outcomes, written.load(), seconds, jobs, interrupted);
   if (!out) {
     std::cerr << "relpos: cannot write the results\n";
     return kExitInternal;
