@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -20,6 +19,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "file_text.hpp"
 #include "relpos/core/solver.hpp"
 
 namespace relpos::cli {
@@ -30,11 +30,33 @@ using Clock = std::chrono::steady_clock;
 std::atomic<bool> g_interrupted{false};
 extern "C" void onInterrupt(int) { g_interrupted.store(true); }
 
+// One spec of the batch: a file of a folder, or a line of the JSONL file (a view into its text).
 struct Item {
-  std::string source;  // the file, or "FILE.jsonl:LINE"
-  std::string text;    // a JSONL line; empty: read `source` in the worker
-  std::string dir;     // what relative mesh paths are relative to
-  std::string name;    // default name: the file's stem, or "FILE:LINE"
+  std::string file;       // a folder's spec file; empty for a JSONL line
+  std::string_view text;  // the JSONL line
+  std::size_t line = 0;   // its number (1-based)
+};
+
+// The batch's input: the folder's spec files, or the JSONL file read once, its lines as views.
+// What only some specs need (a line's "FILE:LINE", its default name, the mesh folder) is spelled
+// out by the worker that needs it.
+struct Input {
+  std::string path, dir, stem;      // the JSONL file, its folder and stem
+  std::unique_ptr<FileText> text;  // its contents
+  std::vector<Item> items;
+
+  // The file, or "FILE.jsonl:LINE".
+  std::string source(const Item& i) const {
+    return i.file.empty() ? path + ":" + std::to_string(i.line) : i.file;
+  }
+  // The default name: the file's stem, or "STEM:LINE".
+  std::string defaultName(const Item& i) const {
+    return i.file.empty() ? stem + ":" + std::to_string(i.line) : fs::path(i.file).stem().string();
+  }
+  // What relative mesh paths are relative to.
+  std::string meshDir(const Item& i) const {
+    return i.file.empty() ? dir : fs::path(i.file).parent_path().string();
+  }
 };
 
 struct Outcome {
@@ -43,27 +65,27 @@ struct Outcome {
   double solve_us = 0.0, total_us = 0.0;
 };
 
-std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
-
 // The specs of a folder (*.json in name order; other files are not specs) or of a JSONL file
 // (one spec per non-blank line).
-std::vector<Item> collectItems(const std::string& input) {
-  std::vector<Item> items;
-  if (fs::is_directory(input)) {
-    for (const auto& f : specFiles({input}))
-      items.push_back({f, "", fs::path(f).parent_path().string(), stem(f)});
-    return items;
+void collectItems(const std::string& path, Input* input) {
+  if (fs::is_directory(path)) {
+    for (const auto& f : specFiles({path})) input->items.push_back({f, {}, 0});
+    return;
   }
-  std::ifstream in(input, std::ios::binary);
-  if (!in) throw UsageError("cannot read '" + input + "'");
-  const std::string dir = fs::path(input).parent_path().string();
-  std::string line;
-  for (int n = 1; std::getline(in, line); ++n) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::string where = input + ":" + std::to_string(n);
-    items.push_back({where, std::move(line), dir, stem(input) + ":" + std::to_string(n)});
+  input->text = std::make_unique<FileText>(path);
+  input->path = path;
+  input->dir = fs::path(path).parent_path().string();
+  input->stem = fs::path(path).stem().string();
+  const std::string_view text = input->text->view();
+  std::size_t n = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view line = text.substr(at, end - at);
+    ++n;
+    if (line.find_first_not_of(" \t\r") != std::string_view::npos)
+      input->items.push_back({std::string(), line, n});
+    at = end + 1;
   }
-  return items;
 }
 
 nlohmann::ordered_json invalidLine(const std::string& name, const std::string& message) {
@@ -83,17 +105,17 @@ std::string joined(const std::string& source, const std::vector<Diagnostic>& pro
   return message;
 }
 
-// An invalid spec's "name" when it has a readable one, else the file's stem or "FILE:LINE".
-std::string specName(const Item& item) {
-  std::string text = item.text;
-  if (text.empty()) {
-    std::ifstream in(item.source, std::ios::binary);
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+// An invalid spec's "name" when it has a readable one, else the file's stem or "STEM:LINE".
+std::string specName(const Input& input, const Item& item) {
+  std::string text(item.text);
+  if (!item.file.empty()) {
+    std::ifstream in(item.file, std::ios::binary);
+    text = readAll(in);
   }
   const auto j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_object() && j.contains("name") && j["name"].is_string())
     return j["name"].get<std::string>();
-  return item.name;
+  return input.defaultName(item);
 }
 
 // The worker's reusable state: the solver's workspace and solution, and the line being written
@@ -101,26 +123,27 @@ std::string specName(const Item& item) {
 struct WorkerState {
   Workspace ws;
   Solution sol;
-  std::string line;
+  std::string text, line;  // the spec's text, its result line
 };
 
 // Parses and solves one spec: its result line into state.line (every problem of an invalid spec
 // joined into its message, "SOURCE: json.path: what"), the rest for the summary.
-Outcome run(const Item& item, const Args& a, const Registry& reg, collision::MeshCache& cache,
-            WorkerState& state) {
+Outcome run(const Input& input, const Item& item, const Args& a, const Registry& reg,
+            collision::MeshCache& cache, WorkerState& state) {
   Solution& sol = state.sol;
   const auto t0 = Clock::now();
   Outcome out;
   ParseResult parsed;
-  if (item.text.empty()) {
-    parsed = parseSpecFile(item.source, reg);
+  if (!item.file.empty()) {
+    parsed = parseSpecFile(item.file, reg);
   } else {
-    parsed = parseSpec(item.text, reg, item.name);
+    state.text.assign(item.text);
+    parsed = parseSpec(state.text, reg, input.defaultName(item));
   }
   if (!parsed.problem) {
-    out.name = specName(item);
+    out.name = specName(input, item);
     out.status = "invalid";
-    state.line = invalidLine(out.name, joined(item.source, parsed.errors)).dump();
+    state.line = invalidLine(out.name, joined(input.source(item), parsed.errors)).dump();
   } else {
     const Problem& pb = *parsed.problem;
     solve(pb, reg, SolverOptions(), state.ws, sol);
@@ -131,8 +154,9 @@ Outcome run(const Item& item, const Args& a, const Registry& reg, collision::Mes
     } else {
       nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
-      if (!collisionFields(item.dir, a, pb, sol, cache, &result, &errors, &warnings)) {
-        result = invalidLine(pb.name, joined(item.source, errors));
+      if (!collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors,
+                           &warnings)) {
+        result = invalidLine(pb.name, joined(input.source(item), errors));
         out.status = "invalid";
       }
       state.line = result.dump();
@@ -202,7 +226,9 @@ int cmdBatch(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("batch takes one folder or one JSONL file");
   if (a.collision_option && !a.collision)
     throw UsageError("--clearance and --collision-samples need --collision");
-  const std::vector<Item> items = collectItems(a.positional[0]);
+  Input input;
+  collectItems(a.positional[0], &input);
+  const std::vector<Item>& items = input.items;
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
 
   // A large buffer: the lines of a fast batch are a stream of ~100 MB/s, and the default buffer
@@ -239,7 +265,7 @@ int cmdBatch(const Args& a, const Registry& reg) {
       if (g_interrupted.load()) return;
       const std::size_t i = next_item.fetch_add(1);
       if (i >= items.size()) return;
-      outcomes[i] = run(items[i], a, reg, cache, state);
+      outcomes[i] = run(input, items[i], a, reg, cache, state);
       while (i >= written.load(std::memory_order_acquire) + kSlots) {
         if (g_interrupted.load()) return;
         std::this_thread::sleep_for(std::chrono::microseconds(100));

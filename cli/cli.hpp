@@ -45,6 +45,9 @@ struct Args {
 // The spec files of folders (their *.json in name order) and files given on the command line.
 std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
 
+// Everything left in the stream, read in chunks (it may be a pipe, whose size is unknown).
+std::string readAll(std::istream& in);
+
 // Adds SPEC.md §2's collision fields to a result: a `collision` object per branch and
 // `collision_free_branches`. False when the scene cannot be built (errors say why).
 bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "file_text.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
@@ -255,11 +256,14 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
       !a.positional.empty())
     specs = specFiles(a.positional);
   else if (batch && fs::is_regular_file(a.positional[0])) {
-    // A JSONL file: each line's list, relative to the file's folder.
-    std::ifstream in(a.positional[0], std::ios::binary);
+    // A JSONL file: each line's list, relative to the file's folder. One search of the whole
+    // text first: most batches name no plugin, and then no line needs looking at.
+    const FileText text(a.positional[0]);
     const std::string dir = fs::path(a.positional[0]).parent_path().string();
+    std::istringstream lines(relpos::mentionsPlugins(text.view()) ? std::string(text.view())
+                                                                   : std::string());
     std::string line;
-    for (int n = 1; std::getline(in, line); ++n) {
+    for (int n = 1; std::getline(lines, line); ++n) {
       const auto paths = relpos::specPluginPathsInText(line, dir);
       for (std::size_t i = 0; i < paths.size(); ++i)
         items.push_back({paths[i], a.positional[0] + ":" + std::to_string(n) + ": plugins[" +
@@ -281,6 +285,14 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
     }
   }
   return true;
+}
+
+std::string readAll(std::istream& in) {
+  std::string text;
+  std::vector<char> chunk(std::size_t{1} << 16);
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  return text;
 }
 
 std::vector<std::string> specFiles(const std::vector<std::string>& inputs) {

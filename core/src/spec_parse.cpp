@@ -1,9 +1,10 @@
 // Spec parsing (SPEC.md §1). Collects every problem it finds rather than stopping at the first,
 // so a user fixes a spec in one round.
+#include <string.h>  // memmem (glibc)
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -601,14 +602,16 @@ ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
   return parseSpec(ss.str(), registry, base);
 }
 
+bool mentionsPlugins(std::string_view text) {
+  // glibc's memmem (vectorised two-way search): ~10 GB/s, where find() stops at every quote of
+  // the document and a Horspool search reaches ~3 GB/s.
+  static constexpr std::string_view key = "\"plugins\"";
+  return ::memmem(text.data(), text.size(), key.data(), key.size()) != nullptr;
+}
+
 std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir) {
   std::vector<std::string> out;
-  // No need to parse a spec without the key (most): a Horspool search skips ahead by up to the
-  // key's length where find() would stop at every quote of the document.
-  static const std::string key = "\"plugins\"";
-  static const std::boyer_moore_horspool_searcher<std::string::const_iterator> searcher(
-      key.begin(), key.end());
-  if (std::search(text.begin(), text.end(), searcher) == text.end()) return out;
+  if (!mentionsPlugins(text)) return out;  // most specs: no need to parse
   const json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("plugins") || !j["plugins"].is_array())
     return out;

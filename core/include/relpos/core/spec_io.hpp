@@ -5,6 +5,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "relpos/core/problem.hpp"
@@ -41,6 +42,9 @@ ParseResult parseSpecWithNlohmann(const std::string& text, const Registry& regis
 std::vector<std::string> specPluginPaths(const std::string& file);
 // The same for a spec given as text (a JSONL line), paths resolved against `dir`.
 std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir);
+// Whether the text contains the key "plugins" at all (a fast scan: when it does not, no spec in
+// it has a plugin list).
+bool mentionsPlugins(std::string_view text);
 
 // "file: path: message" (path omitted when empty).
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
