@@ -77,9 +77,8 @@ class FastJson::Ref {
   bool empty() const { return size() == 0; }
   bool contains(std::string_view key) const { return member(key) >= 0; }
   // A missing key or index gives null (nlohmann's const operator[] must not be asked for one).
+  // One overload for keys: a literal's length is then a compile-time constant, not a strlen call.
   Ref operator[](std::string_view key) const { return Ref(doc_, member(key)); }
-  Ref operator[](const char* key) const { return (*this)[std::string_view(key)]; }
-  Ref operator[](const std::string& key) const { return (*this)[std::string_view(key)]; }
   Ref operator[](std::size_t i) const;
   Ref operator[](int i) const { return (*this)[static_cast<std::size_t>(i)]; }
   template <typename T>

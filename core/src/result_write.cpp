@@ -178,8 +178,7 @@ json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
 
 void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
                      std::string& out) {
-  out.clear();
-  Writer w(out);
+  Writer w(out);  // overwrites `out` from its start (keeping its size saves zero-filling it)
   w.raw("{");
   w.key("relpos");
   w.raw("1");
