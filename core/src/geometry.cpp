@@ -53,11 +53,34 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
   return std::atan2(s, c);
 }
 
-double bestSpinAbout(const Vector3d& u, const Matrix3d& M) {
-  // trace(R(u, φ) M) = cos φ (tr M − uᵀMu) + sin φ tr([u]× M) + uᵀMu.
+namespace {
+// trace(R(u, φ) M) = cos φ (tr M − uᵀMu) + sin φ tr([u]× M) + uᵀMu: the coefficients of cos φ
+// (a) and sin φ (b).
+void spinCoefficients(const Vector3d& u, const Matrix3d& M, double* a, double* b) {
   Matrix3d K;
   K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
-  return std::atan2((K * M).trace(), M.trace() - u.dot(M * u));
+  *a = M.trace() - u.dot(M * u);
+  *b = (K * M).trace();
+}
+}  // namespace
+
+double bestSpinAbout(const Vector3d& u, const Matrix3d& M) {
+  double a, b;
+  spinCoefficients(u, M, &a, &b);
+  return std::atan2(b, a);
+}
+
+double bestSpinAbout(const Vector3d& u, const Matrix3d& M, Matrix3d* spin) {
+  double a, b;
+  spinCoefficients(u, M, &a, &b);
+  const double r = std::sqrt(a * a + b * b);  // |a|, |b| ≤ 3: no overflow to guard against
+  // r = 0: every spin is as good; φ = atan2(0, 0) = 0, as above.
+  const double c = r > 0.0 ? a / r : 1.0, s = r > 0.0 ? b / r : 0.0;
+  // Rodrigues: R = c I + s [u]× + (1 − c) u uᵀ.
+  Matrix3d K;
+  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
+  *spin = c * Matrix3d::Identity() + s * K + (1.0 - c) * (u * u.transpose());
+  return std::atan2(b, a);
 }
 
 bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,

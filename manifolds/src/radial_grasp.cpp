@@ -105,8 +105,11 @@ Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) co
   const Matrix3d P = outer * A_.linear();
   const Matrix3d& Q = L_inv_.linear();
   // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
-  if (spin_closed_) t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), Q * X.linear().transpose() * P);
-  const Matrix3d spin = axisAngle(Vector3d::UnitZ(), t[k_theta]);
+  Matrix3d spin;
+  if (spin_closed_)
+    t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), Q * X.linear().transpose() * P, &spin);
+  else
+    spin = axisAngle(Vector3d::UnitZ(), t[k_theta]);
   const Vector3d inner_t = A_.linear() * (spin * L_inv_.translation());
   const Vector3d p = outer.transpose() * (X.translation() - F_.translation()) - inner_t;
   int k = 1;

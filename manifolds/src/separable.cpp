@@ -39,8 +39,9 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
     // R = P R(u_m, θ) with P the rotation at θ = 0.
     Params& t = *theta;
     const Matrix3d P = rot_.spinBase(t.data());
-    t[1] = bestSpinAbout(rot_.u_m, X.linear().transpose() * P);
-    Y.linear() = P * axisAngle(rot_.u_m, t[1]);
+    Matrix3d spin;
+    t[1] = bestSpinAbout(rot_.u_m, X.linear().transpose() * P, &spin);
+    Y.linear() = P * spin;
   } else {
     Y.linear() = rot_.rotation(theta->data());
   }

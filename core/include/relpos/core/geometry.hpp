@@ -38,6 +38,9 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b);
 // The φ maximising trace(R(u, φ) M). With M = Xᵀ P (or Q Xᵀ P), the spin R = P R(u, φ) (or
 // P R(u, φ) Q) nearest the rotation X: the geodesic angle falls as the trace grows.
 double bestSpinAbout(const Vector3d& u, const Matrix3d& M);
+// The same, and R(u, φ) itself, built from the cosine and sine the maximisation gives (no sin and
+// cos of φ: the nearest-pose search calls this for every pose it weighs).
+double bestSpinAbout(const Vector3d& u, const Matrix3d& M, Matrix3d* spin);
 
 // Clamp to [-1, 1] before acos.
 inline double clampUnit(double c) { return c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c); }
