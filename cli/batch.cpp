@@ -41,7 +41,7 @@ struct Item {
 // What only some specs need (a line's "FILE:LINE", its default name, the mesh folder) is spelled
 // out by the worker that needs it.
 struct Input {
-  std::string path, dir, stem;      // the JSONL file, its folder and stem
+  std::string path, dir, stem;     // the JSONL file, its folder and stem
   std::unique_ptr<FileText> text;  // its contents
   std::vector<Item> items;
 
@@ -154,8 +154,7 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
     } else {
       nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
-      if (!collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors,
-                           &warnings)) {
+      if (!collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors, &warnings)) {
         result = invalidLine(pb.name, joined(input.source(item), errors));
         out.status = "invalid";
       }

@@ -261,7 +261,7 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
     const FileText text(a.positional[0]);
     const std::string dir = fs::path(a.positional[0]).parent_path().string();
     std::istringstream lines(relpos::mentionsPlugins(text.view()) ? std::string(text.view())
-                                                                   : std::string());
+                                                                  : std::string());
     std::string line;
     for (int n = 1; std::getline(lines, line); ++n) {
       const auto paths = relpos::specPluginPathsInText(line, dir);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstring>
 
 namespace relpos::detail {
 namespace {
@@ -37,6 +38,25 @@ bool FastJson::string(std::string_view* out) {
   return false;
 }
 
+namespace {
+// Eight ASCII digits at p as a number, or false (fast_float's SWAR test and conversion; x86 is
+// little-endian). One digit at a time, the multiply-add chain was most of reading a number.
+bool eightDigits(const char* p, std::uint64_t* value) {
+  static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the SWAR digits assume little-endian");
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  if ((((v + 0x4646464646464646ull) | (v - 0x3030303030303030ull)) & 0x8080808080808080ull) != 0)
+    return false;
+  v -= 0x3030303030303030ull;
+  v = v * 10 + (v >> 8);
+  constexpr std::uint64_t kMask = 0x000000FF000000FFull;
+  constexpr std::uint64_t kMul1 = 0x000F424000000064ull;  // 100 + (1000000 << 32)
+  constexpr std::uint64_t kMul2 = 0x0000271000000001ull;  // 1 + (10000 << 32)
+  *value = (((v & kMask) * kMul1) + (((v >> 16) & kMask) * kMul2)) >> 32;
+  return true;
+}
+}  // namespace
+
 // A number in JSON's grammar: -? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?
 //
 // Clinger's fast path while scanning: when the digits make an integer m ≤ 2^53 and the decimal
@@ -48,12 +68,26 @@ bool FastJson::number(double* out) {
   const std::size_t n = text_.size();
   auto digit = [&] { return pos_ < n && text_[pos_] >= '0' && text_[pos_] <= '9'; };
   std::uint64_t m = 0;
-  int significant = 0;  // digits of m from its first non-zero one
-  int e10 = 0;          // minus the fraction's digits, plus the exponent
-  auto mantissaDigit = [&] {
-    const int d = text_[pos_++] - '0';
-    if (significant > 0 || d != 0) ++significant;
-    if (significant <= 19) m = 10 * m + static_cast<std::uint64_t>(d);
+  int kept = 0;                // digits in m (after its leading zeros)
+  bool long_mantissa = false;  // more than 19 of them: from_chars decides
+  int e10 = 0;                 // minus the fraction's digits, plus the exponent
+  // A run of digits into m; in a fraction each also lowers the exponent.
+  auto run = [&](bool fraction) {
+    if (m == 0)
+      while (pos_ < n && text_[pos_] == '0') ++pos_, e10 -= fraction ? 1 : 0;
+    std::uint64_t eight;
+    while (kept <= 11 && n - pos_ >= 8 && eightDigits(text_.data() + pos_, &eight)) {
+      m = m * 100000000u + eight;
+      kept += 8, pos_ += 8, e10 -= fraction ? 8 : 0;
+    }
+    for (; digit(); ++pos_) {
+      if (kept < 19) {
+        m = 10 * m + static_cast<std::uint64_t>(text_[pos_] - '0');
+        ++kept, e10 -= fraction ? 1 : 0;
+      } else {
+        long_mantissa = true;  // (m and e10 no longer matter)
+      }
+    }
   };
   const bool negative = pos_ < n && text_[pos_] == '-';
   if (negative) ++pos_;
@@ -61,14 +95,14 @@ bool FastJson::number(double* out) {
     ++pos_;
   } else {
     if (!digit()) return false;
-    while (digit()) mantissaDigit();
+    run(false);
   }
   bool integral = true;
   if (pos_ < n && text_[pos_] == '.') {
     integral = false;
     ++pos_;
     if (!digit()) return false;
-    while (digit()) mantissaDigit(), --e10;
+    run(true);
   }
   if (pos_ < n && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
     integral = false;
@@ -81,14 +115,14 @@ bool FastJson::number(double* out) {
     e10 += minus ? -e : e;
   }
   // nlohmann keeps "-0" as the integer 0, which reads back as +0.0.
-  if (m == 0 && significant == 0) {
+  if (m == 0 && !long_mantissa) {
     *out = negative && !integral ? -0.0 : 0.0;
     return true;
   }
   static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  if (significant <= 19 && m <= (std::uint64_t{1} << 53) && e10 >= -22 && e10 <= 22) {
+  if (!long_mantissa && m <= (std::uint64_t{1} << 53) && e10 >= -22 && e10 <= 22) {
     const double v = static_cast<double>(m);
     *out = e10 >= 0 ? v * kPow10[e10] : v / kPow10[-e10];
     if (negative) *out = -*out;

@@ -48,9 +48,7 @@ class Parser {
 
   Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
 
-  void error(const Path& path, const std::string& msg) {
-    out_.errors.push_back({path.str(), msg});
-  }
+  void error(const Path& path, const std::string& msg) { out_.errors.push_back({path.str(), msg}); }
   void warn(const Path& path, const std::string& msg) {
     out_.warnings.push_back({path.str(), msg});
   }
@@ -330,8 +328,8 @@ class Parser {
         out_.errors[i].message += " (constraint id '" + c->id + "')";
   }
 
-  void constraintFields(const json& j, const Path& path, const Problem& pb,
-                        InputConstraint* c, bool* ok_out) {
+  void constraintFields(const json& j, const Path& path, const Problem& pb, InputConstraint* c,
+                        bool* ok_out) {
     *ok_out = false;
     if (!j.is_object()) return error(path, "expected an object");
     unknownFields(

@@ -129,21 +129,64 @@ TEST(SpecReader, MutatedSpecsParseAsWithTheJsonLibrary) {
 // every form must give the double nlohmann gives, bit for bit (summary() prints 17 digits).
 TEST(SpecReader, NumbersReadAsTheJsonLibraryReadsThem) {
   std::mt19937_64 rng(2026);
-  std::vector<std::string> numbers = {"0", "-0", "0.0", "-0.0", "0e5", "-0e-5", "1", "-1",
-                                      "0.1", "0.30000000000000004", "9007199254740992",
-                                      "9007199254740993", "9007199254740991.5", "1e22", "1e23",
-                                      "1e-22", "1e-23", "123456789e-22", "4.9e-324", "2.2e-308",
-                                      "1.7976931348623157e308", "0.000001", "1E+2", "12.5e-1",
-                                      "1234567890123456789", "12345678901234567890",
-                                      "0.1234567890123456789012"};
+  std::vector<std::string> numbers = {"0",
+                                      "-0",
+                                      "0.0",
+                                      "-0.0",
+                                      "0e5",
+                                      "-0e-5",
+                                      "1",
+                                      "-1",
+                                      "0.1",
+                                      "0.30000000000000004",
+                                      "9007199254740992",
+                                      "9007199254740993",
+                                      "9007199254740991.5",
+                                      "1e22",
+                                      "1e23",
+                                      "1e-22",
+                                      "1e-23",
+                                      "123456789e-22",
+                                      "4.9e-324",
+                                      "2.2e-308",
+                                      "1.7976931348623157e308",
+                                      "0.000001",
+                                      "1E+2",
+                                      "12.5e-1",
+                                      "1234567890123456789",
+                                      "12345678901234567890",
+                                      "0.1234567890123456789012",
+                                      "999999999999.99999999",
+                                      "0.00000000000000000000001234567891234567"};
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> exponent(-30, 30), digits(1, 19);
+  std::bernoulli_distribution k_nines(0.3);  // runs of nines: the largest mantissas
   char buf[64];
   for (int k = 0; k < 3000; ++k) {
     const double v = unit(rng) * std::pow(10.0, exponent(rng));
     const char* forms[] = {"%.*g", "%.*e", "%.*f"};
     std::snprintf(buf, sizeof buf, forms[k % 3], k % 3 == 2 ? digits(rng) % 12 : digits(rng), v);
     numbers.push_back(buf);
+  }
+  // Digit strings of every length around the reader's eight-at-a-time steps and its 19-digit
+  // mantissa, zeros included.
+  std::uniform_int_distribution<int> length(0, 24), digit(0, 9);
+  auto digitString = [&](int len, bool leading_zero_ok) {
+    std::string d;
+    for (int i = 0; i < len; ++i) {
+      int x = digit(rng);
+      if (i == 0 && !leading_zero_ok && x == 0) x = 9;
+      d += static_cast<char>('0' + (k_nines(rng) ? 9 : x));
+    }
+    return d;
+  };
+  for (int k = 0; k < 3000; ++k) {
+    const int int_len = 1 + length(rng);
+    std::string n = (k % 2 ? "-" : "") +
+                    (int_len == 1 && k % 3 == 0 ? std::string("0") : digitString(int_len, false));
+    if (k % 4 != 0) n += "." + digitString(1 + length(rng), true);
+    if (k % 5 == 0) n += "e" + std::to_string(exponent(rng));
+    numbers.push_back(n);
   }
   for (const std::string& n : numbers)
     expectSame(R"({"fixed": {"pose": {"position": [)" + n + R"(, 0, 0]}, "features": {"p":
