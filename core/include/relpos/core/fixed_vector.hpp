@@ -17,7 +17,9 @@ template <typename T, std::size_t N>
 class FixedVector {
  public:
   static constexpr std::size_t kCapacity = N;
-  FixedVector() = default;
+  // User-provided (not `= default`): value-initialising one — `{}`, emplace_back() — would
+  // otherwise zero all N slots first.
+  FixedVector() noexcept {}  // NOLINT(modernize-use-equals-default)
   FixedVector(const FixedVector& o) { copyFrom(o); }
   FixedVector& operator=(const FixedVector& o) {
     if (this != &o) {

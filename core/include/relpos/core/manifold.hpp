@@ -83,7 +83,8 @@ inline constexpr std::size_t kManifoldStorage = 1152;
 
 class ManifoldHolder {
  public:
-  ManifoldHolder() = default;
+  // User-provided: value-initialising a holder would otherwise zero its buffer first.
+  ManifoldHolder() noexcept {}  // NOLINT(modernize-use-equals-default)
   ManifoldHolder(const ManifoldHolder& o) { copyFrom(o); }
   ManifoldHolder& operator=(const ManifoldHolder& o) {
     if (this != &o) {
