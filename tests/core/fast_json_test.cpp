@@ -160,7 +160,7 @@ TEST(SpecReader, NumbersReadAsTheJsonLibraryReadsThem) {
                                       "0.00000000000000000000001234567891234567"};
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> exponent(-30, 30), digits(1, 19);
-  std::bernoulli_distribution k_nines(0.3);  // runs of nines: the largest mantissas
+  std::bernoulli_distribution nine(0.3);  // many nines: the largest mantissas
   char buf[64];
   for (int k = 0; k < 3000; ++k) {
     const double v = unit(rng) * std::pow(10.0, exponent(rng));
@@ -176,7 +176,7 @@ TEST(SpecReader, NumbersReadAsTheJsonLibraryReadsThem) {
     for (int i = 0; i < len; ++i) {
       int x = digit(rng);
       if (i == 0 && !leading_zero_ok && x == 0) x = 9;
-      d += static_cast<char>('0' + (k_nines(rng) ? 9 : x));
+      d += static_cast<char>('0' + (nine(rng) ? 9 : x));
     }
     return d;
   };
