@@ -1,5 +1,6 @@
 #pragma once
 // What the relpos command's files share: options, exit codes, spec discovery, collision fields.
+#include <istream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
