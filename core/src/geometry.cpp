@@ -54,13 +54,18 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
 }
 
 namespace {
+// [u]×, the matrix of v ↦ u × v.
+Matrix3d crossMatrix(const Vector3d& u) {
+  Matrix3d K;
+  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
+  return K;
+}
+
 // trace(R(u, φ) M) = cos φ (tr M − uᵀMu) + sin φ tr([u]× M) + uᵀMu: the coefficients of cos φ
 // (a) and sin φ (b).
 void spinCoefficients(const Vector3d& u, const Matrix3d& M, double* a, double* b) {
-  Matrix3d K;
-  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
   *a = M.trace() - u.dot(M * u);
-  *b = (K * M).trace();
+  *b = (crossMatrix(u) * M).trace();
 }
 }  // namespace
 
@@ -77,9 +82,7 @@ double bestSpinAbout(const Vector3d& u, const Matrix3d& M, Matrix3d* spin) {
   // r = 0: every spin is as good; φ = atan2(0, 0) = 0, as above.
   const double c = r > 0.0 ? a / r : 1.0, s = r > 0.0 ? b / r : 0.0;
   // Rodrigues: R = c I + s [u]× + (1 − c) u uᵀ.
-  Matrix3d K;
-  K << 0, -u.z(), u.y(), u.z(), 0, -u.x(), -u.y(), u.x(), 0;
-  *spin = c * Matrix3d::Identity() + s * K + (1.0 - c) * (u * u.transpose());
+  *spin = c * Matrix3d::Identity() + s * crossMatrix(u) + (1.0 - c) * (u * u.transpose());
   return std::atan2(b, a);
 }
 

@@ -2,7 +2,6 @@
 // so a user fixes a spec in one round.
 #include <string.h>  // memmem (glibc)
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -60,7 +59,7 @@ class Parser {
       const std::string_view key = it.key();
       bool ok = false;
       for (std::string_view k : known) ok = ok || key == k;
-      if (!ok) warn(Path(path, it.key()), "unknown field (ignored)");
+      if (!ok) warn(Path(path, key), "unknown field (ignored)");
     }
   }
 
