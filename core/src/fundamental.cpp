@@ -86,6 +86,41 @@ Fundamental Fundamental::angle(const Vector3d& u_m, const Vector3d& u_f, double 
   return f;
 }
 
+Vector3d* Fundamental::fixedPoint() {
+  switch (kind) {
+    case FundamentalKind::kPointPoint:
+    case FundamentalKind::kLineLine:
+      return &q;
+    case FundamentalKind::kPointLine:
+    case FundamentalKind::kPointPlane:
+      return point_side == Side::kFixed ? &p : &q;
+    case FundamentalKind::kAngle:
+    case FundamentalKind::kCustom:
+      break;
+  }
+  return nullptr;
+}
+
+Vector3d* Fundamental::mobilePoint() {
+  switch (kind) {
+    case FundamentalKind::kPointPoint:
+    case FundamentalKind::kLineLine:
+      return &p;
+    case FundamentalKind::kPointLine:
+    case FundamentalKind::kPointPlane:
+      return point_side == Side::kMobile ? &p : &q;
+    case FundamentalKind::kAngle:
+    case FundamentalKind::kCustom:
+      break;
+  }
+  return nullptr;
+}
+
+void Fundamental::translate(const Vector3d& offset_W, const Vector3d& offset_M) {
+  if (Vector3d* f = fixedPoint()) *f += offset_W;
+  if (Vector3d* m = mobilePoint()) *m += offset_M;
+}
+
 SourceMask ConstraintSet::usedSources() const {
   SourceMask m = 0;
   for (const auto& f : translational) m |= f.sources;

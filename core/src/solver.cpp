@@ -6,6 +6,8 @@
 #include <cstring>
 #include <string>
 
+#include "centring.hpp"
+
 namespace relpos {
 
 bool SolverOptions::isValid(std::string* why) const {
@@ -37,7 +39,7 @@ enum class SetOutcome { kCombined, kInconsistent, kUnhandled };
 struct SolveState {
   const Registry& registry;
   const SolverOptions& options;
-  const Tolerance& tol;
+  Tolerance tol;  // decided once the decomposed geometry is measured
   Workspace& ws;
   Solution& solution;
   SourceMask conflicts = 0;
@@ -307,25 +309,40 @@ void prepare(const SolverOptions& options, Workspace& ws, Solution& solution) {
     ws.pending.reserve(static_cast<std::size_t>(options.max_branches));
 }
 
-}  // namespace
-
-void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
-           Workspace& ws, Solution& solution) {
-  const auto t0 = std::chrono::steady_clock::now();
+// One attempt: decompose, measure (and with `centre`, centre) the geometry, combine and match;
+// the branches are then moved back to the problem's frames. False when a branch's manifold cannot
+// be moved back (a plugin's): the caller solves again uncentred.
+bool solveOnce(const Problem& problem, const Registry& registry, const SolverOptions& options,
+               bool centre, Workspace& ws, Solution& solution) {
   prepare(options, ws, solution);
   solution.libraries = registry.loadedLibraries();
-  const Tolerance tol =
-      Tolerance::forScale(problem.lengthScale(), options.length_tolerance, options.angle_tolerance);
-  SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
+  SolveState st{registry, options, Tolerance(), ws, solution, 0, "", std::string(), false};
   std::string why;
+  detail::Centring frame;
   if (!options.isValid(&why)) {
     setUnhandled(st, "invalid solver options: " + why);
   } else if (problem.constraints.size() > 64) {
     setUnhandled(st, "more than 64 constraints");
   } else {
     decomposeAll(problem, st);
+    frame = detail::centreSets(ws.pending, centre);
+    st.tol = detail::toleranceFor(frame, options.length_tolerance, options.angle_tolerance);
+    if (const char* range = detail::outOfRange(frame)) setUnhandled(st, range);
   }
   runPending(st);
+  if (!frame.centred || (frame.offset_W.isZero(0.0) && frame.offset_M.isZero(0.0))) return true;
+  for (Branch& b : solution.branches)
+    if (!b.manifold.get()->rebase(frame.offset_W, frame.offset_M)) return false;
+  return true;
+}
+
+}  // namespace
+
+void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
+           Workspace& ws, Solution& solution) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!solveOnce(problem, registry, options, true, ws, solution))
+    solveOnce(problem, registry, options, false, ws, solution);
   solution.solve_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -73,6 +73,12 @@ Params LineDistanceManifold::project(const Isometry3d& X) const {
   return th;
 }
 
+bool LineDistanceManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
+  F_.pretranslate(offset_W);  // T(offset_W)·F
+  L_inv_.translate(-offset_M);  // L⁻¹·T(−offset_M)
+  return true;
+}
+
 std::string LineDistanceManifold::describe() const {
   return ranged() ? "mixed LineDistance (line at a distance range from a fixed line)"
                   : "mixed LineDistance (line at a fixed distance from a fixed line)";

@@ -126,6 +126,15 @@ Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) co
   return Y;
 }
 
+bool RadialGraspManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
+  RadialGraspSpec moved = s_;
+  moved.axis_point += offset_W;
+  moved.plane_point += offset_W;
+  moved.tip += offset_M;
+  *this = RadialGraspManifold(moved);  // the spin's closed form depends on the mobile origin
+  return true;
+}
+
 std::string RadialGraspManifold::describe() const {
   return std::string("mixed RadialGrasp (approach ") + (s_.sigma > 0 ? "away from" : "towards") +
          " the axis)";

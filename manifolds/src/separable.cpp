@@ -49,6 +49,13 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
   return Y;
 }
 
+bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
+  TranslationPart moved = trans_;
+  moved.translate(offset_W, offset_M);
+  *this = SeparableManifold(rot_, moved);
+  return true;
+}
+
 std::string SeparableManifold::describe() const {
   return std::string("rotation ") + toString(rot_.kind) + ", translation " + toString(trans_.kind);
 }

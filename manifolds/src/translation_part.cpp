@@ -392,6 +392,12 @@ bool TranslationPart::invariantUnderSpin(const Vector3d& u) const {
   return false;
 }
 
+void TranslationPart::translate(const Vector3d& offset_W, const Vector3d& offset_M) {
+  c1.translate(offset_W, offset_M);
+  c2.translate(offset_W, offset_M);
+  for (Fundamental& f : linear) f.translate(offset_W, offset_M);
+}
+
 Parameter TranslationPart::rangeParameter() const {
   return Parameter{"distance", ParamKind::kLength, c1.lo, c1.hi, false};
 }

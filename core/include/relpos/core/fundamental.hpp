@@ -51,6 +51,13 @@ struct Fundamental {
   bool exact() const { return lo == hi; }
   double value() const { return lo; }
   bool translational() const { return kind != FundamentalKind::kAngle; }
+  // The fixed side's point (world) and the mobile side's point (mobile frame) of a built-in
+  // translational or line-line constraint; null for an angle (directions only) or a custom kind.
+  Vector3d* fixedPoint();
+  Vector3d* mobilePoint();
+  // Moves the fixed point by offset_W and the mobile point by offset_M (directions and values do
+  // not change): the same constraint between the moved geometries.
+  void translate(const Vector3d& offset_W, const Vector3d& offset_M);
 
   static Fundamental pointPoint(const Vector3d& p_m, const Vector3d& q_f, double v, SourceMask s);
   static Fundamental pointLine(Side point_side, const Vector3d& p, const Vector3d& a,

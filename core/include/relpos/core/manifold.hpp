@@ -56,6 +56,18 @@ class Manifold {
     return pose(*theta);
   }
 
+  // The solver matches branches on centred geometry (fixed features moved by −offset_W in the
+  // world, mobile ones by −offset_M in the mobile frame: see solver.cpp) and then calls this to
+  // make the branch that of the problem as given: the same set of poses as
+  // T(offset_W)·pose(θ)·T(−offset_M) over θ (the parameters may be re-anchored). False when the
+  // type cannot (the default, e.g. a plugin's manifold): the solver then solves the problem
+  // uncentred instead.
+  virtual bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
+    (void)offset_W;
+    (void)offset_M;
+    return false;
+  }
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };
@@ -109,6 +121,7 @@ class ManifoldHolder {
     ptr_ = nullptr;
   }
   const Manifold* get() const { return ptr_; }
+  Manifold* get() { return ptr_; }
   const Manifold& operator*() const { return *ptr_; }
   const Manifold* operator->() const { return ptr_; }
   explicit operator bool() const { return ptr_ != nullptr; }

@@ -24,8 +24,9 @@ namespace relpos {
 
 // Bumped whenever a type a plugin shares with relpos changes incompatibly (2: Manifold gained
 // the virtual closedFormParams/poseWithTail, which moves every later vtable slot; 3: the built-in
-// SeparableManifold and RadialGraspManifold a plugin may build gained members).
-inline constexpr long kPluginAbiVersion = 3;
+// SeparableManifold and RadialGraspManifold a plugin may build gained members; 4: Manifold gained
+// the virtual rebase).
+inline constexpr long kPluginAbiVersion = 4;
 
 // The version with a fingerprint of the shared layouts folded in, so a plugin built against other
 // headers is refused even when the version number was not bumped.

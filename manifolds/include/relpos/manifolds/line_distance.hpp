@@ -23,6 +23,7 @@ class LineDistanceManifold final : public MixedManifoldBase<LineDistanceManifold
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
   std::string describe() const override;
+  bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
 
  private:
   bool ranged() const { return lo_ != hi_; }

@@ -38,6 +38,7 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   unsigned closedFormParams() const override;
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
+  bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
 
  private:
   bool rRanged() const { return s_.r_lo != s_.r_hi; }

@@ -24,6 +24,10 @@ class RevolvedManifold final : public MixedManifoldBase<RevolvedManifold> {
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
   std::string describe() const override;
+  bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override {
+    c_ += offset_W;
+    return inner_.rebase(offset_W, offset_M);
+  }
 
  private:
   Isometry3d turn(double phi) const;  // Rot(ℓ, φ)

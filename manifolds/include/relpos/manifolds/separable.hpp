@@ -25,6 +25,9 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   unsigned closedFormParams() const override { return closed_form_; }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
+  // The translation part's points move; the closed forms are decided again (whether the spin
+  // moves the translation depends on where the mobile origin is).
+  bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
   const RotationPart& rotation() const { return rot_; }
   const TranslationPart& translation() const { return trans_; }
 

@@ -65,6 +65,8 @@ struct TranslationPart {
   // every mobile point on the line through the mobile origin along u, every mobile line along
   // it, every mobile plane normal to it. The spin about u then moves only the rotation.
   bool invariantUnderSpin(const Vector3d& u) const;
+  // Every constraint's fixed point moved by offset_W, its mobile point by offset_M.
+  void translate(const Vector3d& offset_W, const Vector3d& offset_M);
 
  private:
   Parameter rangeParameter() const;

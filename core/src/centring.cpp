@@ -1,0 +1,80 @@
+#include "centring.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace relpos::detail {
+namespace {
+
+// Running bounding box of points.
+struct Box {
+  Vector3d lo = Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Vector3d hi = Vector3d::Constant(-std::numeric_limits<double>::infinity());
+  void grow(const Vector3d& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  bool empty() const { return !(lo.x() <= hi.x()); }
+  // The middle (not the centroid: it does not depend on the order of the constraints).
+  Vector3d middle() const { return empty() ? Vector3d::Zero() : Vector3d(0.5 * (lo + hi)); }
+  double magnitude() const {
+    return empty() ? 0.0 : std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  }
+  double halfExtent() const { return empty() ? 0.0 : 0.5 * (hi - lo).maxCoeff(); }
+};
+
+bool isCustom(const Fundamental& f) { return f.kind == FundamentalKind::kCustom; }
+
+}  // namespace
+
+Centring centreSets(std::vector<ConstraintSet>& sets, bool centre) {
+  Centring c;
+  Box fixed, mobile;
+  double values = 0.0;
+  bool custom = false;
+  for (ConstraintSet& set : sets)
+    for (auto* list : {&set.translational, &set.rotational})
+      for (Fundamental& f : *list) {
+        custom = custom || isCustom(f);
+        if (const Vector3d* p = f.fixedPoint()) fixed.grow(*p);
+        if (const Vector3d* p = f.mobilePoint()) mobile.grow(*p);
+        if (f.translational() && !isCustom(f))
+          for (double v : {f.lo, f.hi})
+            if (std::isfinite(v)) values = std::max(values, std::abs(v));
+      }
+  c.magnitude = std::max(fixed.magnitude(), mobile.magnitude());
+  c.centred = centre && !custom;
+  if (c.centred) {
+    c.offset_W = fixed.middle();
+    c.offset_M = mobile.middle();
+    for (ConstraintSet& set : sets)
+      for (Fundamental& f : set.translational) f.translate(-c.offset_W, -c.offset_M);
+  }
+  // Uncentred, the coordinates themselves are the lengths the rules compute with.
+  const double extent = c.centred ? std::max(fixed.halfExtent(), mobile.halfExtent()) : c.magnitude;
+  c.size = std::max(extent, values);
+  return c;
+}
+
+Tolerance toleranceFor(const Centring& c, double relative_length, double angle) {
+  // 64 ulps of the largest coordinate: the input's own rounding (half an ulp each), its placement
+  // by the fixed pose and the centring (a few ulps), with room for the rules' arithmetic.
+  constexpr double kRoundingUlps = 64 * std::numeric_limits<double>::epsilon();
+  Tolerance t;
+  t.length = std::max(relative_length * c.size, kRoundingUlps * c.magnitude);
+  t.angle = angle;
+  return t;
+}
+
+const char* outOfRange(const Centring& c) {
+  if (!std::isfinite(c.size) || !std::isfinite(c.magnitude))
+    return "a coordinate or value is not finite";
+  if (c.magnitude > 1e100 || c.size > 1e100)
+    return "coordinates or lengths beyond 1e100 (their squares would overflow): scale the problem";
+  if (c.size > 0.0 && c.size < 1e-100)
+    return "the geometry spans less than 1e-100 (its squares would underflow): scale the problem";
+  return nullptr;
+}
+
+}  // namespace relpos::detail
