@@ -40,6 +40,30 @@ Matrix3d rotationPairs(const Vector3d& u, const Vector3d& v, const Vector3d& r, 
   return basisOf(r, s) * basisOf(u, v).transpose();
 }
 
+namespace {
+// v − u or v + u, whichever is the short one.
+Vector3d shortDifference(const Vector3d& v, const Vector3d& u) {
+  return u.dot(v) >= 0.0 ? Vector3d(v - u) : Vector3d(v + u);
+}
+}  // namespace
+
+Vector3d accurateCross(const Vector3d& u, const Vector3d& v) {
+  return u.cross(shortDifference(v, u));  // u × (v ∓ u) = u × v
+}
+
+Vector3d perpendicularPart(const Vector3d& v, const Vector3d& u) {
+  const Vector3d e = shortDifference(v, u);
+  return e - e.dot(u) * u;  // (v ∓ u) − ((v ∓ u)·u) u = v − (v·u) u
+}
+
+Vector3d pointWherePlanesMeet(const Vector3d& a, const Vector3d& n_a, const Vector3d& b,
+                              const Vector3d& n_b) {
+  const Vector3d w = perpendicularPart(n_b, n_a);
+  // (a + λ w − b)·n_b = 0. w·n_b, not |w|²: the two differ by the normals' own rounding, which
+  // |w|² ~ angle² would magnify.
+  return a + ((b - a).dot(n_b) / w.dot(n_b)) * w;
+}
+
 double angleBetween(const Vector3d& a, const Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
@@ -89,18 +113,21 @@ double bestSpinAbout(const Vector3d& u, const Matrix3d& M, Matrix3d* spin) {
 bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,
                           const Vector3d& d2, double parallel_tol, Vector3d* foot1,
                           Vector3d* foot2) {
-  Vector3d n = d1.cross(d2);
-  double s2 = n.squaredNorm();
-  if (std::sqrt(s2) <= parallel_tol) {
+  const Vector3d n = accurateCross(d1, d2);
+  const double s = n.norm();
+  if (!(s > parallel_tol)) {
     *foot1 = a1;
     *foot2 = projectOnLine(a1, a2, d2);
     return false;
   }
-  Vector3d r = a2 - a1;
-  double t1 = r.cross(d2).dot(n) / s2;
-  double t2 = r.cross(d1).dot(n) / s2;
+  const Vector3d m = n / s;  // the common perpendicular's direction
+  const Vector3d r = a2 - a1;
+  // a1 + t1 d1 + h m = a2 + t2 d2; crossing with d2 and dotting with m: t1 = r·(d2 × m) / |n|.
+  // The separation h = r·m is read off directly (it is well conditioned), so foot2 − foot1 is
+  // exactly the perpendicular, not the difference of two feet each uncertain along the lines.
+  const double t1 = r.dot(d2.cross(m)) / s;
   *foot1 = a1 + t1 * d1;
-  *foot2 = a2 + t2 * d2;
+  *foot2 = *foot1 + r.dot(m) * m;
   return true;
 }
 

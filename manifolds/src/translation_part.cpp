@@ -406,14 +406,8 @@ namespace {
 
 // Intersection line of two non-parallel planes (point closest to the first plane's point).
 void planePlane(const TShape& a, const TShape& b, Vector3d* point, Vector3d* dir) {
-  Vector3d d = a.d.cross(b.d).normalized();
-  // Solve for x on both planes, in the span of the normals, offset from a.c.
-  double h1 = 0.0, h2 = (b.c - a.c).dot(b.d);
-  double n12 = a.d.dot(b.d);
-  double det = 1.0 - n12 * n12;
-  double c1 = (h1 - h2 * n12) / det, c2 = (h2 - h1 * n12) / det;
-  *point = a.c + c1 * a.d + c2 * b.d;
-  *dir = d;
+  *point = pointWherePlanesMeet(a.c, a.d, b.c, b.d);
+  *dir = accurateCross(a.d, b.d).normalized();
 }
 
 Vector3d linePlane(const Vector3d& c, const Vector3d& d, const TShape& plane) {

@@ -65,7 +65,12 @@ void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tole
   // |R u − w| = q  <=>  R u · w = (|u|² + |w|² − q²) / 2.
   if (nu <= tol.length || nw <= tol.length)
     return impliedOrIncompatible(tol.equalLength(std::max(nu, nw), q), out, !a_pin);
-  pinAngle(pin, u / nu, w / nw, 0.5 * (nu * nu + nw * nw - q * q), nu * nw, tol, out);
+  // Q reaches from |nu − nw| (R u along w) to nu + nw (against it): decided in lengths, not on
+  // the cosine below, whose units are lengths squared.
+  if (q < std::abs(nu - nw) - tol.length || q > nu + nw + tol.length)
+    return out.fire(kIncompatible).incompatible(kOutOfReach);
+  const double c = 0.5 * (nu * nu + nw * nw - q * q) / (nu * nw);
+  two(out.fire(kAngle), pin, Fundamental::angle(u / nu, w / nw, std::acos(clampUnit(c)), 0));
 }
 
 void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,

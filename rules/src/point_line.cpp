@@ -42,7 +42,7 @@ void pointsOnLineAtDistance(const Fundamental& a, const Vector3d& foot, const Ve
 
 void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol, RuleOutput& out) {
   const double p = a.value(), q = b.value();
-  const double sin_theta = a.d.cross(b.d).norm();
+  const double sin_theta = accurateCross(a.d, b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
     // Parallel lines: coaxial cylinders (redundant or incompatible) or up to two lines.
     const Vector3d w = b.q - a.q;
@@ -86,7 +86,7 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
   const double p = a.value(), q = b.value();
   const Vector3d u_a = (b.p - a.p) / da;
   const Side side = a.point_side;
-  const double sin_theta = a.d.cross(b.d).norm();
+  const double sin_theta = accurateCross(a.d, b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
     const Vector3d w = b.q - a.q;
     const Vector3d w_perp = w - w.dot(a.d) * a.d;  // from K_b to L_b, ⊥ both
@@ -136,7 +136,7 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
   // is one point for every rotation.
   Vector3d f1, f2;
   closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
-  const Vector3d n = a.d.cross(b.d) / sin_theta;
+  const Vector3d n = accurateCross(a.d, b.d) / sin_theta;
   const double h = (f2 - f1).dot(n);
   double alpha;
   if (!acosChecked(h, da, tol.length, &alpha)) return out.fire(kIncompatible).incompatible(kNoPose);

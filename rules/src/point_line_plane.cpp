@@ -41,7 +41,8 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
     // One point: the cylinder about K_b cuts the plane in one or two lines ∥ K_b.
     if (tol.zeroLength(p)) return out.fire(kImplied).redundantSecond();  // K_b lies in Π_b
     out.fire(kLinesOnPlane);
-    if (tol.equalLength(db, p)) return one(out, onLine(pl, foot, pl.d, 0));
+    // Tangent, or beyond by no more than the tolerance (the check above allowed it).
+    if (db >= p - tol.length) return one(out, onLine(pl, foot, pl.d, 0));
     const Vector3d v = pl.d.cross(n);
     const double k = std::sqrt(p * p - db * db);
     one(out, onLine(pl, foot + k * v, pl.d, 0));

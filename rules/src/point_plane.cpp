@@ -15,15 +15,12 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
                    RuleOutput& out) {
   if (!sameRoles(a, b)) return;  // mixed roles: not a PMF table
   const double da = (b.p - a.p).norm();
-  const bool parallel = tol.parallelUnit(a.d.cross(b.d).norm());
-  if (!parallel) {
+  const Vector3d cross = accurateCross(a.d, b.d);
+  if (!tol.parallelUnit(cross.norm())) {
     // Fig. 3c: the same point on two planes lies on their intersection line.
     if (da > tol.length) return;  // different points: the matcher's plane∩plane line
-    const Vector3d dir = a.d.cross(b.d).normalized();
-    // A point on both planes, in the span of the normals from a.q.
-    const double n12 = a.d.dot(b.d), h2 = (b.q - a.q).dot(b.d), det = 1 - n12 * n12;
-    const Vector3d c = a.q + (-h2 * n12 / det) * a.d + (h2 / det) * b.d;
-    return one(out.fire(kPlanesMeet), onLine(a, c, dir, 0));
+    return one(out.fire(kPlanesMeet),
+               onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
   }
   const Vector3d& n = a.d;
   const double db = (b.q - a.q).dot(n);  // signed distance from Σ to Π along Σ's normal

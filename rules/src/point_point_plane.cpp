@@ -31,8 +31,9 @@ void pointPointAndPointPlane(const Fundamental& pp, const Fundamental& pl, const
             "IV Table V, row 1)");
   if (da <= tol.length) {
     // One point on a sphere and a plane: the circle about the normal through P_b, or the tangent
-    // point.
-    if (tol.equalLength(db, p)) return one(out.fire(kTangent), pinPoint(pl, Q_b));
+    // point (also where the plane passes beyond the sphere by no more than the tolerance: the
+    // check above allowed it, and the circle's radius would be the root of a negative).
+    if (db >= p - tol.length) return one(out.fire(kTangent), pinPoint(pl, Q_b));
     const double k = std::sqrt(p * p - db * db);
     return two(out.fire(kCircle), onLine(pl, P_b, pl.d, k), pl);
   }

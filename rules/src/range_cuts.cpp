@@ -41,7 +41,7 @@ void cylinderCutByParallelPlane(const Fundamental& a, const Fundamental& b, cons
     return;
   }
   const Vector3d foot = a.q + signed_h * b.d;  // the axis's trace in the plane
-  const Vector3d m = a.d.cross(b.d).normalized();
+  const Vector3d m = accurateCross(a.d, b.d).normalized();
   const double outer = std::sqrt(std::max(0.0, a.hi * a.hi - h * h));
   if (h >= a.lo - tol.length) {
     out.fire(kOneStrip);

@@ -29,6 +29,21 @@ Matrix3d rotationBetween(const Vector3d& from, const Vector3d& to);
 // r, s independent.
 Matrix3d rotationPairs(const Vector3d& u, const Vector3d& v, const Vector3d& r, const Vector3d& s);
 
+// u × v and v − (v·u) u for unit vectors u, v, to full relative precision also when they are
+// nearly (anti)parallel: computed from the difference v ∓ u, which is exact or nearly so, instead
+// of from products of nearly equal numbers (whose rounding, ~1e-16, is all that is left of a
+// cross product 1e-8 long). Nearly parallel lines and planes are where the rules decide
+// "meet" or "do not meet".
+Vector3d accurateCross(const Vector3d& u, const Vector3d& v);
+Vector3d perpendicularPart(const Vector3d& v, const Vector3d& u);
+
+// The point of the line where the planes (a, unit n_a) and (b, unit n_b) meet that lies in a's
+// plane across from a (a + λ·(n_b's part ⊥ n_a)), for planes that are not parallel. Accurate to
+// the rounding of the coordinates divided by the planes' angle, which is as well as the line is
+// determined at all (the textbook solve divides by 1 − (n_a·n_b)², which keeps ~1e-16 absolute).
+Vector3d pointWherePlanesMeet(const Vector3d& a, const Vector3d& n_a, const Vector3d& b,
+                              const Vector3d& n_b);
+
 // Angle between unit vectors, robust near 0 and pi.
 double angleBetween(const Vector3d& a, const Vector3d& b);
 
@@ -50,8 +65,11 @@ inline Vector3d projectOnLine(const Vector3d& p, const Vector3d& a, const Vector
   return a + (p - a).dot(d) * d;
 }
 
-// Distance between the infinite lines (a1, d1) and (a2, d2) and the foot points on each
-// (closest points). Returns false when the lines are parallel (feet then: a1 and its projection).
+// The feet of the common perpendicular of the infinite lines (a1, unit d1) and (a2, unit d2):
+// foot2 − foot1 is the perpendicular itself, whose length is the distance between the lines to
+// the rounding of the coordinates, however close to parallel they are (the feet's positions
+// along the lines are as uncertain as the lines' crossing is: ~ulp/angle). Returns false when the
+// lines are parallel within parallel_tol (feet then: a1 and its projection).
 bool closestPointsOfLines(const Vector3d& a1, const Vector3d& d1, const Vector3d& a2,
                           const Vector3d& d2, double parallel_tol, Vector3d* foot1,
                           Vector3d* foot2);
