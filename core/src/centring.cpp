@@ -21,7 +21,10 @@ struct Box {
   double magnitude() const {
     return empty() ? 0.0 : std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   }
-  double halfExtent() const { return empty() ? 0.0 : 0.5 * (hi - lo).maxCoeff(); }
+  // The box's diagonal: no two of its points are further apart, so an angle within the angle
+  // tolerance never moves one point's reading of another (a lever at most this long) by more than
+  // the length tolerance: nearly parallel is then also nearly coincident.
+  double diagonal() const { return empty() ? 0.0 : (hi - lo).norm(); }
 };
 
 bool isCustom(const Fundamental& f) { return f.kind == FundamentalKind::kCustom; }
@@ -52,7 +55,7 @@ Centring centreSets(std::vector<ConstraintSet>& sets, bool centre) {
       for (Fundamental& f : set.translational) f.translate(-c.offset_W, -c.offset_M);
   }
   // Uncentred, the coordinates themselves are the lengths the rules compute with.
-  const double extent = c.centred ? std::max(fixed.halfExtent(), mobile.halfExtent()) : c.magnitude;
+  const double extent = c.centred ? std::max(fixed.diagonal(), mobile.diagonal()) : c.magnitude;
   c.size = std::max(extent, values);
   return c;
 }

@@ -23,10 +23,12 @@ struct Angle {
   double alpha;
   bool parallel;
   SourceMask sources;
+  double err;  // Fundamental::err: how far the vectors or the angle may be from the exact ones
 };
 
-Angle normalise(const Fundamental& f, const Tolerance& tol) {
-  Angle a{f.p, f.q, f.value(), false, f.sources};
+Angle normalise(const Fundamental& f, const Tolerance& given) {
+  const Tolerance tol = given.widened(f.err);
+  Angle a{f.p, f.q, f.value(), false, f.sources, f.err};
   if (tol.zeroAngle(a.alpha)) {
     a.parallel = true;
     a.alpha = 0;
@@ -45,13 +47,20 @@ MatchResult inconsistent(MatchContext& ctx, SourceMask m, const char* why) {
 }
 
 // Two parallelisms on independent vectors: one rotation (App. III-A), if the angle between the
-// mobile vectors equals the angle between the fixed ones.
-MatchResult twoParallels(MatchContext& ctx, const Angle& a, const Angle& b,
+// mobile vectors equals the angle between the fixed ones (within what their derivation leaves
+// uncertain). The rotation meets the better known one exactly and leaves the mismatch to the
+// other: a parallelism derived from a short span can turn by far more than one from a long span
+// before a point moves by the length tolerance.
+MatchResult twoParallels(MatchContext& ctx, const Angle& a0, const Angle& b0,
                          RotationAlternatives& out) {
-  if (a.u_m.cross(b.u_m).norm() <= ctx.tol.angle) return MatchResult::kNoMatch;
-  if (!ctx.tol.equalAngle(angleBetween(a.u_m, b.u_m), angleBetween(a.u_f, b.u_f)))
-    return inconsistent(ctx, a.sources | b.sources,
+  const Tolerance tol = ctx.tol.widened(a0.err + b0.err);
+  if (a0.u_m.cross(b0.u_m).norm() <= tol.angle) return MatchResult::kNoMatch;
+  if (!tol.equalAngle(angleBetween(a0.u_m, b0.u_m), angleBetween(a0.u_f, b0.u_f)))
+    return inconsistent(ctx, a0.sources | b0.sources,
                         "two parallelisms whose mobile and fixed vectors form different angles");
+  const bool swap = b0.err < a0.err;
+  const Angle& a = swap ? b0 : a0;
+  const Angle& b = swap ? a0 : b0;
   out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)));
   return MatchResult::kMatched;
 }
@@ -84,7 +93,8 @@ PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const RotationPar
   const double phi0 = std::atan2(w0_perp.cross(vf_perp).dot(a.u_f), w0_perp.dot(vf_perp));
   const double L = (std::cos(sigma_m + b.alpha) - h0) / amp;
   const double U = (std::cos(sigma_m - b.alpha) - h0) / amp;
-  const double eps = 1e-12;
+  // The cosines are known to about the angle tolerance: just beyond ±1, the cones touch.
+  const double eps = tol.angle / amp;
   if (L > 1.0 + eps || U < -1.0 - eps) return out;
   const double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
   const double psi_out = std::acos(clampUnit(L));  // |φ − φ0| <= psi_out
@@ -112,14 +122,15 @@ RotationPart twoAngleBase(const Angle& a, const Angle& b) {
 
 MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
                       RotationAlternatives& out) {
+  const Tolerance tol = ctx.tol.widened(a0.err + b0.err);
   // Either constraint can carry the free spin φ; take the one that splits the set into fewer
   // pieces (a full turn of φ gives each connected loop as one branch).
   const Angle* a = &a0;
   const Angle* b = &b0;
   RotationPart base = twoAngleBase(*a, *b);
-  PhiIntervals iv = twoAngleIntervals(*a, *b, base, ctx.tol);
+  PhiIntervals iv = twoAngleIntervals(*a, *b, base, tol);
   RotationPart base2 = twoAngleBase(b0, a0);
-  PhiIntervals iv2 = twoAngleIntervals(b0, a0, base2, ctx.tol);
+  PhiIntervals iv2 = twoAngleIntervals(b0, a0, base2, tol);
   if (iv.degenerate || (!iv2.degenerate && iv2.count < iv.count)) {
     std::swap(a, b);
     base = base2;
@@ -132,8 +143,8 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
   const double cos_sm = a->u_m.dot(b->u_m);
   int n_circles = 0;
   for (double s : {1.0, -1.0}) {
-    if (ctx.tol.equalAngle(angleBetween(s * b->u_f, a->u_f), a->alpha) &&
-        std::abs(s * cos_sm - std::cos(b->alpha)) <= ctx.tol.angle) {
+    if (tol.equalAngle(angleBetween(s * b->u_f, a->u_f), a->alpha) &&
+        std::abs(s * cos_sm - std::cos(b->alpha)) <= tol.angle) {
       out.add(RotationPart::oneParallel(a->u_m, s * b->u_f));
       ++n_circles;
     }
@@ -142,7 +153,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
     return inconsistent(ctx, a->sources | b->sources,
                         "two angle constraints that no rotation satisfies together");
   for (int k = 0; k < iv.count; ++k) {
-    if (iv.iv[k].hi - iv.iv[k].lo <= ctx.tol.angle) {
+    if (iv.iv[k].hi - iv.iv[k].lo <= tol.angle) {
       // A single φ: both θ signs meet, one discrete rotation.
       double th[1] = {0.5 * (iv.iv[k].lo + iv.iv[k].hi)};
       out.add(RotationPart::fixed(base.rotation(th)));
@@ -163,7 +174,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
 // Three angles on right trihedra (App. III-C): R = F R2 Mᵀ with R2 = Rx(θ1) Rz(α) Rx(θ2),
 // cos(θ1 + θ2) = (cβ + cγ)/(1 + cα), cos(θ1 − θ2) = (cγ − cβ)/(1 − cα): up to 8 rotations.
 MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAlternatives& out) {
-  const double tol = 1e-9;
+  const double tol = ctx.tol.widened(a.err + b.err + c.err).angle;
   auto ortho = [&](const Vector3d& x, const Vector3d& y) { return std::abs(x.dot(y)) <= tol; };
   if (!ortho(a.u_m, b.u_m) || !ortho(a.u_m, c.u_m) || !ortho(b.u_m, c.u_m) ||
       !ortho(a.u_f, b.u_f) || !ortho(a.u_f, c.u_f) || !ortho(b.u_f, c.u_f))
@@ -194,7 +205,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
   F.col(0) = A.u_f, F.col(1) = B.u_f, F.col(2) = C.u_f;
   const double ca = std::cos(A.alpha), cb = std::cos(B.alpha), cc = std::cos(C.alpha);
   const double cp = (cb + cc) / (1 + ca), cm = (cc - cb) / (1 - ca);
-  if (std::abs(cp) > 1 + 1e-9 || std::abs(cm) > 1 + 1e-9)
+  if (std::abs(cp) > 1 + tol || std::abs(cm) > 1 + tol)
     return inconsistent(ctx, all, "three angle constraints that no rotation satisfies");
   const double a1 = std::acos(clampUnit(cp)), a2 = std::acos(clampUnit(cm));
   for (int k = 0; k < 2; ++k)
@@ -214,20 +225,31 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
 }
 
 // Two parallelisms on independent vectors fix the rotation (App. III-A); every other rotational
-// constraint then either holds (implied) or proves the set inconsistent.
+// constraint then either holds (implied) or proves the set inconsistent. The pair is the best
+// known one (least err), so that the others are checked against the most reliable rotation.
 MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
                                RotationAlternatives& out) {
-  for (int i = 0; i < n; ++i) {
-    if (!ang[i].parallel) continue;
-    for (int j = i + 1; j < n; ++j) {
-      if (!ang[j].parallel || ang[i].u_m.cross(ang[j].u_m).norm() <= ctx.tol.angle) continue;
+  int order[kMaxFundamentals];
+  int m = 0;
+  for (int i = 0; i < n; ++i)
+    if (ang[i].parallel) order[m++] = i;
+  // (Ties by position: deterministic, and std::stable_sort would allocate its buffer.)
+  std::sort(order, order + m, [&](int x, int y) {
+    return ang[x].err != ang[y].err ? ang[x].err < ang[y].err : x < y;
+  });
+  for (int oi = 0; oi < m; ++oi) {
+    const Angle& a = ang[order[oi]];
+    for (int oj = oi + 1; oj < m; ++oj) {
+      const Angle& b = ang[order[oj]];
+      if (a.u_m.cross(b.u_m).norm() <= ctx.tol.widened(a.err + b.err).angle) continue;
       RotationAlternatives two;
-      MatchResult r = twoParallels(ctx, ang[i], ang[j], two);
+      MatchResult r = twoParallels(ctx, a, b, two);
       if (r != MatchResult::kMatched) return r;
       const Matrix3d R = two.parts[0].R0;
       for (int k = 0; k < n; ++k) {
-        if (!ctx.tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
-          return inconsistent(ctx, ang[i].sources | ang[j].sources | ang[k].sources,
+        const Tolerance tol = ctx.tol.widened(a.err + b.err + ang[k].err);
+        if (!tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
+          return inconsistent(ctx, a.sources | b.sources | ang[k].sources,
                               "a rotation fixed by two parallelisms violates another rotational "
                               "constraint");
       }

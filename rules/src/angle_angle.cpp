@@ -12,16 +12,21 @@ namespace {
 using namespace detail;
 
 // App. II: unit vectors at angle a from u and b from v (u, v independent unit vectors).
-// Returns how many (0, 1 or 2).
+// Returns how many (0, 1 or 2). `*err`: how far they may be from the exact ones when the angles
+// and vectors are known to `in_err` (a first-order bound; a square root where the cones touch).
 int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const Tolerance& tol,
-               Vector3d s[2]) {
+               double in_err, Vector3d s[2], double* err) {
   const double cs = u.dot(v);
   const Vector3d vu = (v - cs * u).normalized();
   const Vector3d w = u.cross(vu);
   const double ss = std::sqrt(std::max(0.0, 1 - cs * cs));
   const double cphi = (std::cos(b) - std::cos(a) * cs) / ss;
   const double ct2 = std::sin(a) * std::sin(a) - cphi * cphi;
-  if (ct2 < -4 * tol.angle) return 0;
+  // The position across the cones' common plane (cphi) moves by e; their height above it (ct) by
+  // e / ct, or by sqrt(2 e) where they barely meet.
+  const double e = in_err * (1.0 + 2.0 / ss);
+  *err = in_err > 0.0 ? e + std::min(e / std::sqrt(std::max(ct2, 0.0)), std::sqrt(2.0 * e)) : 0.0;
+  if (ct2 < -4 * (tol.angle + e)) return 0;
   const Vector3d base = std::cos(a) * u + cphi * vu;
   if (ct2 <= 4 * tol.angle * tol.angle + 1e-14) {
     s[0] = base.normalized();
@@ -35,22 +40,34 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
 
 enum Case { kIncompatible, kSameVector, kTwoCones, kParallelFixes, kParallelAndAngle };
 
+// Whether the directions s± are known well enough to replace the cones by: where the cones' axes
+// are nearly parallel, their meeting moves by far more than the vectors' own uncertainty
+// (1/sin of the axes' angle), and a parallelism that uncertain would let later comparisons wave
+// real differences through. The pair is then left to the two-angle rotation (App. III-D).
+bool wellConditioned(double err, double in_err, const Tolerance& given) {
+  return err <= 1e3 * given.angle + 10.0 * in_err;
+}
+
 struct Ang {
   Vector3d m, f;
   double a;
   SourceMask src;
+  double err;
 };
 
 // Snap angles at 0 or π to a parallelism with the fixed vector flipped.
 Ang snap(const Fundamental& x, const Tolerance& tol) {
-  Ang r{x.p, x.q, x.value(), x.sources};
+  Ang r{x.p, x.q, x.value(), x.sources, x.err};
   if (tol.equalAngle(r.a, kPi)) r.f = -r.f, r.a = 0;
   if (tol.zeroAngle(r.a)) r.a = 0;
   return r;
 }
 
-void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& tol,
+void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& given,
                RuleOutput& out) {
+  // Every comparison allows for how far derived vectors may be from the exact ones.
+  const double in_err = fa.err + fb.err;
+  const Tolerance tol = given.widened(in_err);
   Ang a = snap(fa, tol), b = snap(fb, tol);
   // Same mobile vector (σ_m = 0 or π): one vector at α from u_f and β from v_f.
   double sm = angleBetween(a.m, b.m);
@@ -59,19 +76,25 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
     double sf = angleBetween(a.f, b.f);
     if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = 0;
     if (sf <= tol.angle) {
-      if (tol.equalAngle(a.a, b.a)) return out.fire(kSameVector).redundantSecond();
+      // Keep the one known best: the solution then meets the other within its uncertainty.
+      if (tol.equalAngle(a.a, b.a)) {
+        out.fire(kSameVector);
+        return fa.err > fb.err ? out.redundantFirst() : out.redundantSecond();
+      }
       return out.fire(kIncompatible)
           .incompatible(
               "one direction at two different angles from the same direction (PMF App. IV Table "
               "X)");
     }
     Vector3d s[2];
-    const int n = sPlusMinus(a.f, b.f, a.a, b.a, tol, s);
+    double err = 0.0;
+    const int n = sPlusMinus(a.f, b.f, a.a, b.a, given, in_err, s, &err);
     if (n == 0)
       return out.fire(kIncompatible)
           .incompatible("no direction makes both angles (PMF App. IV Table X, row 1)");
+    if (!wellConditioned(err, in_err, given)) return;
     out.fire(kTwoCones);
-    for (int k = 0; k < n; ++k) one(out, Fundamental::angle(a.m, s[k], 0.0, 0));
+    for (int k = 0; k < n; ++k) one(out, withErr(Fundamental::angle(a.m, s[k], 0.0, 0), err));
     return;
   }
   const bool pa = a.a == 0, pb = b.a == 0;
@@ -103,17 +126,19 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& to
             "Table X)");
   }
   Vector3d s[2];
-  const int n = sPlusMinus(par.f, ang.f, sm, ang.a, tol, s);
+  double err = 0.0;
+  const int n = sPlusMinus(par.f, ang.f, sm, ang.a, given, in_err, s, &err);
   if (n == 0)
     return out.fire(kIncompatible)
         .incompatible(
             "a parallelism and an angle that no rotation satisfies together (PMF App. IV Table X, "
             "row 1)");
+  if (!wellConditioned(err, in_err, given)) return;
   out.fire(kParallelAndAngle);
   for (int k = 0; k < n; ++k) {
     Alt& alt = out.addAlternative();
-    alt.push_back(Fundamental::angle(par.m, par.f, 0.0, 0));
-    alt.push_back(Fundamental::angle(ang.m, s[k], 0.0, 0));
+    alt.push_back(withErr(Fundamental::angle(par.m, par.f, 0.0, 0), par.err));
+    alt.push_back(withErr(Fundamental::angle(ang.m, s[k], 0.0, 0), err));
   }
 }
 

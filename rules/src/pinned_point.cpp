@@ -32,25 +32,37 @@ void impliedOrIncompatible(bool holds, RuleOutput& out, bool drop_first = false)
     out.redundantSecond();
 }
 
-// Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(num / den)}.
-void pinAngle(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
-              double den, const Tolerance& tol, RuleOutput& out) {
-  double alpha;
-  if (!acosChecked(num, den, tol.length, &alpha))
-    return out.fire(kIncompatible).incompatible(kOutOfReach);
-  two(out.fire(kAngle), pin, Fundamental::angle(u_m, w_f, alpha, 0));
+// Replaces {pin, b} by {pin, ∠(u_m, w_f) = acos(c)}, c known to ±dc and the vectors to ±dir_err.
+void pinAngle(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double c, double dc,
+              double dir_err, RuleOutput& out) {
+  two(out.fire(kAngle), pin,
+      withErr(Fundamental::angle(u_m, w_f, std::acos(clampUnit(c)), 0),
+              acosSpread(c, dc) + dir_err));
 }
 
-// Two cones: the angle between a mobile vector and a fixed one is asin(s) or π − asin(s).
+// Two cones: the angle between a mobile vector and a fixed one is asin(s) or π − asin(s), with
+// s = num / den (lengths, den the span of the vector u_m or w_f that was derived from lengths).
 void pinSinCone(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double num,
                 double den, const Tolerance& tol, RuleOutput& out) {
   if (num > den + tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
-  const double a = std::asin(std::min(1.0, num / den));
+  const double s = std::min(1.0, num / den);
+  const double a = std::asin(s);
+  const double err = asinSpread(s, tol.length * (1.0 + s) / den) + spanErr(den, tol);
   out.fire(kCone);
-  if (std::abs(a - kPi / 2) <= tol.angle)
-    return two(out, pin, Fundamental::angle(u_m, w_f, kPi / 2, 0));
-  two(out, pin, Fundamental::angle(u_m, w_f, a, 0));
-  two(out, pin, Fundamental::angle(u_m, w_f, kPi - a, 0));
+  if (std::abs(a - kPi / 2) <= tol.angle + err)
+    return two(out, pin, withErr(Fundamental::angle(u_m, w_f, kPi / 2, 0), err));
+  two(out, pin, withErr(Fundamental::angle(u_m, w_f, a, 0), err));
+  two(out, pin, withErr(Fundamental::angle(u_m, w_f, kPi - a, 0), err));
+}
+
+// The span `len` long (from the pin to the other point) at height h over a plane through the pin
+// (its normal being the other vector): ∠ = acos(h / len).
+void pinPlaneAngle(const Fundamental& pin, const Vector3d& u_m, const Vector3d& w_f, double h,
+                   double len, const Tolerance& tol, RuleOutput& out) {
+  if (std::abs(h) > len + tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
+  two(out.fire(kAngle), pin,
+      withErr(Fundamental::angle(u_m, w_f, std::acos(clampUnit(h / len)), 0),
+              heightAngleErr(h, len, tol)));
 }
 
 void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
@@ -70,7 +82,9 @@ void pinnedWithPointPoint(const Fundamental& a, const Fundamental& b, const Tole
   if (q < std::abs(nu - nw) - tol.length || q > nu + nw + tol.length)
     return out.fire(kIncompatible).incompatible(kOutOfReach);
   const double c = 0.5 * (nu * nu + nw * nw - q * q) / (nu * nw);
-  two(out.fire(kAngle), pin, Fundamental::angle(u / nu, w / nw, std::acos(clampUnit(c)), 0));
+  // Each of q, |u|, |w| known to the length tolerance moves c by at most that over |u||w|.
+  const double dc = tol.length * (q + nu + nw) / (nu * nw);
+  pinAngle(pin, u / nu, w / nw, c, dc, spanErr(nu, tol) + spanErr(nw, tol), out);
 }
 
 void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,
@@ -105,10 +119,14 @@ void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tol
   // geometry): one parallelism per point.
   if (nw < ne - tol.length) return out.fire(kIncompatible).incompatible(kOutOfReach);
   const double k = nw > ne ? std::sqrt(nw * nw - ne * ne) : 0.0;
+  // k from |w| and |e|, each known to the tolerance (a root: steep where k is small).
+  const double dk = tol.length * (nw + ne) / std::max(k, std::sqrt(2.0 * tol.length * nw));
+  const double err = (tol.length + dk) / nw + spanErr(nw, tol);
   out.fire(kThrough);
-  if (k <= tol.length) return two(out, pin, Fundamental::angle(e / ne, w / nw, 0.0, 0));
-  two(out, pin, Fundamental::angle((e + k * b.d).normalized(), w / nw, 0.0, 0));
-  two(out, pin, Fundamental::angle((e - k * b.d).normalized(), w / nw, 0.0, 0));
+  if (k <= tol.length)
+    return two(out, pin, withErr(Fundamental::angle(e / ne, w / nw, 0.0, 0), err));
+  two(out, pin, withErr(Fundamental::angle((e + k * b.d).normalized(), w / nw, 0.0, 0), err));
+  two(out, pin, withErr(Fundamental::angle((e - k * b.d).normalized(), w / nw, 0.0, 0), err));
 }
 
 void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const Tolerance& tol,
@@ -119,13 +137,13 @@ void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const To
     const Vector3d u = b.p - pin.p;
     const double h = (b.q - pin.q).dot(b.d), nu = u.norm();
     if (nu <= tol.length) return impliedOrIncompatible(tol.zeroLength(h), out);
-    return pinAngle(pin, u / nu, b.d, h, nu, tol, out);
+    return pinPlaneAngle(pin, u / nu, b.d, h, nu, tol, out);
   }
   // Fixed Q_f on the mobile plane (c_m, n_m): (Q_f − P_f)·R n_m = (c_m − P_m)·n_m.
   const Vector3d w = b.p - pin.q;
   const double h = (b.q - pin.p).dot(b.d), nw = w.norm();
   if (nw <= tol.length) return impliedOrIncompatible(tol.zeroLength(h), out);
-  pinAngle(pin, b.d, w / nw, h, nw, tol, out);
+  pinPlaneAngle(pin, b.d, w / nw, h, nw, tol, out);
 }
 
 }  // namespace

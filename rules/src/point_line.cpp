@@ -97,10 +97,15 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
       // rest along the lines: one or two directions v = (d_b u_b ± k d) / d_a.
       if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       out.fire(kParallelSpan);
-      if (tol.equalLength(da, db)) return two(out, a, angleAB(side, u_a, u_b, 0.0));
+      if (tol.equalLength(da, db))
+        return two(out, a,
+                   withErr(angleAB(side, u_a, u_b, 0.0), spanErr(da, tol) + spanErr(db, tol)));
       const double k = std::sqrt(da * da - db * db);
-      two(out, a, angleAB(side, u_a, (db * u_b + k * a.d) / da, 0.0));
-      two(out, a, angleAB(side, u_a, (db * u_b - k * a.d) / da, 0.0));
+      // k from d_a and d_b, each known to the tolerance (a root: steep where k is small).
+      const double dk = tol.length * (da + db) / std::max(k, std::sqrt(2.0 * tol.length * da));
+      const double err = 2.0 * spanErr(da, tol) + dk / da;
+      two(out, a, withErr(angleAB(side, u_a, (db * u_b + k * a.d) / da, 0.0), err));
+      two(out, a, withErr(angleAB(side, u_a, (db * u_b - k * a.d) / da, 0.0), err));
       return;
     }
     if (db <= tol.length && (tol.zeroLength(p) != tol.zeroLength(q))) {
@@ -110,12 +115,14 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
       const Fundamental& on = p_on ? a : b;
       const double r = p_on ? q : p;
       if (r > da + tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
-      const double alpha = std::asin(std::min(1.0, r / da));
+      const double s = std::min(1.0, r / da);
+      const double alpha = std::asin(s);
+      const double err = asinSpread(s, tol.length * (1.0 + s) / da) + spanErr(da, tol);
       out.fire(kNearOwnLine);
-      if (std::abs(alpha - kPi / 2) <= tol.angle)
-        return two(out, on, angleAB(side, u_a, a.d, kPi / 2));
-      two(out, on, angleAB(side, u_a, a.d, alpha));
-      two(out, on, angleAB(side, u_a, a.d, kPi - alpha));
+      if (std::abs(alpha - kPi / 2) <= tol.angle + err)
+        return two(out, on, withErr(angleAB(side, u_a, a.d, kPi / 2), err));
+      two(out, on, withErr(angleAB(side, u_a, a.d, alpha), err));
+      two(out, on, withErr(angleAB(side, u_a, a.d, kPi - alpha), err));
       return;
     }
     // Table III, collinear rows: all four points on one perpendicular of the lines.
@@ -140,7 +147,8 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
   const double h = (f2 - f1).dot(n);
   double alpha;
   if (!acosChecked(h, da, tol.length, &alpha)) return out.fire(kIncompatible).incompatible(kNoPose);
-  three(out.fire(kCrossingSpan), a, onPlane(b, b.q, n.cross(b.d)), angleAB(side, u_a, n, alpha));
+  three(out.fire(kCrossingSpan), a, onPlane(b, b.q, n.cross(b.d)),
+        withErr(angleAB(side, u_a, n, alpha), heightAngleErr(h, da, tol)));
 }
 
 void twoPointLine(const Fundamental& a, const Fundamental& b, const Tolerance& tol,

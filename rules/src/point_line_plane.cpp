@@ -56,7 +56,8 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
     if (!acosChecked(-h, da, tol.length, &alpha))
       return out.fire(kIncompatible).incompatible("the plane is out of reach of the second point");
     const Vector3d u_a = (pp.p - pl.p) / da;
-    return two(out.fire(kParallelSpan), pl, angleAB(pl.point_side, u_a, n, alpha));
+    return two(out.fire(kParallelSpan), pl,
+               withErr(angleAB(pl.point_side, u_a, n, alpha), heightAngleErr(h, da, tol)));
   }
   if (db > tol.length && tol.equalLength(db - da, p)) {
     // P at p from K_b toward the plane, Q right below it on the plane.

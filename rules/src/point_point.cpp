@@ -40,7 +40,8 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (tol.zeroLength(p) && tol.zeroLength(q)) {
     // Row 7: both points pinned, equal spans: P pinned and P_aQ_a kept along P_bQ_b.
     const Vector3d u_a = (b.p - a.p) / da;
-    return two(out.fire(kEqualSpan), a, Fundamental::angle(u_a, u_b, 0.0, 0));
+    return two(out.fire(kEqualSpan), a,
+               withErr(Fundamental::angle(u_a, u_b, 0.0, 0), spanErr(da, tol) + spanErr(db, tol)));
   }
   // Rows 3 and 6: the extreme configurations put all four points on one line.
   if (tol.equalLength(da + db, std::abs(p - q)) && !tol.zeroLength(p - q)) {

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the rule families: building results on the same sides as the inputs, and the
 // small geometric facts several PMF tables use.
+#include <algorithm>
 #include <cmath>
 
 #include "relpos/core/registry.hpp"
@@ -44,6 +45,36 @@ inline void three(RuleOutput& out, const Fundamental& f, const Fundamental& g,
   a.push_back(f);
   a.push_back(g);
   a.push_back(h);
+}
+
+// --- the uncertainty of derived angle constraints (Fundamental::err) ---------------------------
+
+// The direction along a span `len` long whose two ends are each known to the length tolerance.
+inline double spanErr(double len, const Tolerance& tol) { return 2.0 * tol.length / len; }
+
+// How far acos (asin) can move while its argument c is only known to ±dc: an angle read off a
+// cosine near ±1 is known only to about sqrt(2 dc).
+inline double acosSpread(double c, double dc) {
+  const double a = std::acos(clampUnit(c));
+  return std::max(std::abs(std::acos(clampUnit(c - dc)) - a),
+                  std::abs(std::acos(clampUnit(c + dc)) - a));
+}
+inline double asinSpread(double s, double ds) {
+  const double a = std::asin(clampUnit(s));
+  return std::max(std::abs(std::asin(clampUnit(s - ds)) - a),
+                  std::abs(std::asin(clampUnit(s + ds)) - a));
+}
+
+// The err of ∠ = acos(h / len) for a height h and a span len (> 0), both lengths known to the
+// tolerance, the span's direction being one of the angle's vectors.
+inline double heightAngleErr(double h, double len, const Tolerance& tol) {
+  const double c = h / len;
+  return acosSpread(c, tol.length * (1.0 + std::abs(c)) / len) + spanErr(len, tol);
+}
+
+inline Fundamental withErr(Fundamental f, double err) {
+  f.err = err;
+  return f;
 }
 
 // acos of a ratio that must lie in [-1, 1] up to tolerance; false when it does not.

@@ -44,6 +44,13 @@ struct Fundamental {
   Vector3d d = Vector3d::UnitZ();
   Vector3d u = Vector3d::UnitZ();  // kLineLine: the mobile line's direction
   double lo = 0.0, hi = 0.0;
+  // How far an angle constraint's vectors (or value) may be from those of the problem as given,
+  // in radians, because a rule derived them from lengths: the direction of a span d_a long is
+  // known to (length tolerance) / d_a, and an angle read off a cosine near ±1 to its square root.
+  // Rules and matchers widen their angle comparisons by it (a derived parallelism 1e-8 long is no
+  // parallelism to 1e-9 rad), and where they must break one constraint to keep another, they keep
+  // the one known best. 0 for what the user gave.
+  double err = 0.0;
   SourceMask sources = 0;
   std::uint16_t id = 0;      // identity within a constraint set (assigned by ConstraintSet::add)
   std::uint16_t custom = 0;  // kCustom: the index Registry::addCustomKind returned

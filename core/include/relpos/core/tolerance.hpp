@@ -15,6 +15,12 @@ struct Tolerance {
     t.angle = angle;
     return t;
   }
+  // The same tolerance with `extra_angle` radians (the uncertainty of derived vectors) added.
+  Tolerance widened(double extra_angle) const {
+    Tolerance t = *this;
+    t.angle += extra_angle;
+    return t;
+  }
   bool zeroLength(double v) const { return std::abs(v) <= length; }
   bool equalLength(double a, double b) const { return std::abs(a - b) <= length; }
   bool zeroAngle(double v) const { return std::abs(v) <= angle; }
