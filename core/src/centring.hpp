@@ -16,10 +16,11 @@ namespace relpos::detail {
 struct Centring {
   Vector3d offset_W = Vector3d::Zero();  // subtracted from every fixed point (world)
   Vector3d offset_M = Vector3d::Zero();  // subtracted from every mobile point (mobile frame)
-  double size = 0.0;       // the longest diagonal of the two sides' boxes, or a longer length value
-  double magnitude = 0.0;  // largest coordinate before centring: what the input's rounding scales with
-  bool centred = false;    // false: nothing was moved (a plugin's custom kind holds points we
-                           // cannot read, or centring was not asked for)
+  double size = 0.0;  // the longest diagonal of the two sides' boxes, or a longer length value
+  double magnitude =
+      0.0;  // largest coordinate before centring: what the input's rounding scales with
+  bool centred = false;  // false: nothing was moved (a plugin's custom kind holds points we
+                         // cannot read, or centring was not asked for)
 };
 
 // Measures the sets and, when `centre`, moves their geometry (every set is an alternative of the

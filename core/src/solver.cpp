@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "centring.hpp"
@@ -311,9 +312,9 @@ void prepare(const SolverOptions& options, Workspace& ws, Solution& solution) {
 
 // One attempt: decompose, measure (and with `centre`, centre) the geometry, combine and match;
 // the branches are then moved back to the problem's frames. False when a branch's manifold cannot
-// be moved back (a plugin's): the caller solves again uncentred.
+// be moved back (a plugin's): the caller solves again uncentred. `tol`: the tolerance decided.
 bool solveOnce(const Problem& problem, const Registry& registry, const SolverOptions& options,
-               bool centre, Workspace& ws, Solution& solution) {
+               bool centre, Workspace& ws, Solution& solution, Tolerance& tol) {
   prepare(options, ws, solution);
   solution.libraries = registry.loadedLibraries();
   SolveState st{registry, options, Tolerance(), ws, solution, 0, "", std::string(), false};
@@ -329,6 +330,7 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
     st.tol = detail::toleranceFor(frame, options.length_tolerance, options.angle_tolerance);
     if (const char* range = detail::outOfRange(frame)) setUnhandled(st, range);
   }
+  tol = st.tol;
   runPending(st);
   if (!frame.centred || (frame.offset_W.isZero(0.0) && frame.offset_M.isZero(0.0))) return true;
   for (Branch& b : solution.branches)
@@ -336,13 +338,79 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   return true;
 }
 
+// A point of the branch to check: every parameter at the middle of its bounds (0 for a full turn),
+// at its finite bound when it has one, else 0. False when a bound is NaN.
+bool referenceParameters(const Manifold& m, int dof, Params* t) {
+  *t = Params{};
+  for (int i = 0; i < dof; ++i) {
+    const Parameter p = m.parameter(i);
+    if (std::isnan(p.min) || std::isnan(p.max)) return false;
+    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
+    (*t)[i] = lo && hi ? 0.5 * (p.min + p.max) : (lo ? p.min : (hi ? p.max : 0.0));
+  }
+  return true;
+}
+
+// The last check before a solution leaves the solver: one pose of every branch, evaluated against
+// every input constraint by its type's own reading of the spec (ConstraintType::violation), not
+// by the rules that built the branch. A branch that breaks a constraint by far more than any
+// rounding could (10⁴ tolerances) or holds a NaN is a numerical breakdown: the answer is then
+// `unhandled`, never a wrong pose.
+void checkBranches(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                   Solution& solution) {
+  if (solution.status != Status::kSolved) return;
+  constexpr double kBreakdown = 1e4;
+  // What every branch is checked against, looked up and placed once (≤ 64 constraints).
+  struct Check {
+    const ConstraintType* type;
+    Feature fixed_W;
+  };
+  FixedVector<Check, 64> checks;  // (slots not constructed until used)
+  const std::size_t n = problem.constraints.size();
+  for (const InputConstraint& c : problem.constraints)
+    checks.push_back({registry.constraintType(c.type), c.fixed.placed(problem.fixed.pose)});
+  for (std::size_t b = 0; b < solution.branches.size(); ++b) {
+    const Manifold& m = *solution.branches[b].manifold;
+    Params theta;
+    bool finite = referenceParameters(m, m.dof(), &theta);
+    const Isometry3d X = m.pose(theta);
+    finite = finite && X.matrix().allFinite();
+    double worst = finite ? 0.0 : std::numeric_limits<double>::infinity();
+    std::size_t which = 0;
+    for (std::size_t i = 0; finite && i < n; ++i) {
+      const ConstraintType* type = checks[i].type;
+      if (!type || !type->violation) continue;
+      const InputConstraint& c = problem.constraints[i];
+      const double v = type->violation(c, checks[i].fixed_W, c.mobile.placed(X), tol);
+      if (!(v <= worst)) worst = v, which = i;
+    }
+    if (worst <= kBreakdown) continue;
+    char why[200];
+    if (!finite)
+      std::snprintf(why, sizeof why,
+                    "numerical breakdown: branch %zu evaluates to non-finite numbers", b);
+    else
+      std::snprintf(why, sizeof why,
+                    "numerical breakdown: branch %zu breaks constraint %zu by %.3g tolerances at "
+                    "its reference parameters",
+                    b, which, worst);
+    solution.branches.clear();
+    solution.redundant.clear();
+    solution.status = Status::kUnhandled;
+    solution.message = why;
+    return;
+  }
+}
+
 }  // namespace
 
 void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
            Workspace& ws, Solution& solution) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (!solveOnce(problem, registry, options, true, ws, solution))
-    solveOnce(problem, registry, options, false, ws, solution);
+  Tolerance tol;
+  if (!solveOnce(problem, registry, options, true, ws, solution, tol))
+    solveOnce(problem, registry, options, false, ws, solution, tol);
+  checkBranches(problem, registry, tol, solution);
   solution.solve_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -3,7 +3,7 @@
 namespace relpos::manifolds {
 
 SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPart& t)
-    : rot_(r), trans_(t) {
+    : rot_(r), trans_(t), dof_(r.dof() + t.dof()) {
   if (!trans_.projectsExactly()) return;
   closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
   const bool spins =

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "constraint_violation.hpp"
 #include "relpos/rules/builtin.hpp"
 
 namespace relpos::rules {
@@ -247,6 +248,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.takes_value = true;
   t.check = &checkDistance;
   t.decompose = &decomposeDistance;
+  t.violation = &distanceViolation;
   r.addConstraintType(t);
 
   t = ConstraintType{};
@@ -256,6 +258,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.takes_value = true;
   t.check = &checkAngle;
   t.decompose = &decomposeAngle;
+  t.violation = &angleViolation;
   r.addConstraintType(t);
 
   t = ConstraintType{};
@@ -273,6 +276,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
                      {P, C},
                      {C, P}});
   t.decompose = &decomposeCoincident;
+  t.violation = &coincidentViolation;
   r.addConstraintType(t);
 
   t = ConstraintType{};
@@ -280,6 +284,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.description = "parallel directions / normals; line parallel to plane";
   t.accepts = pairs({{L, L}, {Pl, Pl}, {L, Pl}, {Pl, L}});
   t.decompose = &decomposeParallel;
+  t.violation = &parallelViolation;
   r.addConstraintType(t);
 
   t = ConstraintType{};
@@ -287,6 +292,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.description = "perpendicular directions / normals; line along a plane's normal";
   t.accepts = pairs({{L, L}, {Pl, Pl}, {L, Pl}, {Pl, L}});
   t.decompose = &decomposePerpendicular;
+  t.violation = &perpendicularViolation;
   r.addConstraintType(t);
 
   t = ConstraintType{};
@@ -294,6 +300,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.description = "cylinder tangent to a plane, a cylinder or a line";
   t.accepts = pairs({{C, Pl}, {Pl, C}, {C, C}, {C, L}, {L, C}});
   t.decompose = &decomposeTangent;
+  t.violation = &tangentViolation;
   r.addConstraintType(t);
 }
 

@@ -35,6 +35,12 @@ using DecomposeFn = void (*)(const InputConstraint& c, const Feature& fixed_W, S
 // Appends "field: problem" messages for a structurally valid constraint whose values are wrong
 // (e.g. "value: negative distance -1 for an unsigned distance").
 using CheckFn = void (*)(const InputConstraint& c, std::vector<std::string>& problems);
+// How far features placed in the world (the fixed one by the fixed pose, the mobile one by a pose
+// of a branch) are from meeting c, in units of the tolerance: the larger of the length part over
+// tol.length and the angle part over tol.angle (0 when c holds; NaN never: infinity instead). The
+// solver checks every branch it returns with it; a type without one is not checked.
+using ViolationFn = double (*)(const InputConstraint& c, const Feature& fixed_W,
+                               const Feature& mobile_W, const Tolerance& tol);
 
 struct FeaturePair {
   FeatureKind fixed, mobile;
@@ -47,6 +53,7 @@ struct ConstraintType {
   bool takes_value = false;  // distance/angle need "value" or "min"/"max"
   CheckFn check = nullptr;
   DecomposeFn decompose = nullptr;
+  ViolationFn violation = nullptr;
   std::string origin = "built-in";
   bool accepts_pair(FeatureKind f, FeatureKind m) const;
 };

@@ -13,7 +13,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
  public:
   SeparableManifold(const RotationPart& r, const TranslationPart& t);
   const char* typeName() const override { return "separable"; }
-  int dof() const override { return rot_.dof() + trans_.dof(); }
+  int dof() const override { return dof_; }
   int rotationalDof() const override { return rot_.dof(); }
   int translationalDof() const override { return trans_.dof(); }
   Parameter parameter(int i) const override;
@@ -34,6 +34,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
  private:
   RotationPart rot_;
   TranslationPart trans_;
+  int dof_ = 0;  // kept: a translation part of planes counts its rows to know it
   unsigned closed_form_ = 0u;
   bool spin_closed_ = false;  // bit 1 of closed_form_: θ of kOneAngle / kOneAngleRange
 };
