@@ -67,6 +67,9 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle) 
   Tolerance t;
   t.length = std::max(relative_length * c.size, kRoundingUlps * c.magnitude);
   t.angle = angle;
+  // Rounding magnified a thousandfold is still ~1e-13 of the size, far below the tolerance; more
+  // waits for the pairs that decide better (solver.cpp).
+  t.max_amplification = 1e3;
   return t;
 }
 

@@ -47,6 +47,7 @@ struct SolveState {
   const char* conflict_reason = "";
   std::string unhandled;  // first reason an alternative could not be decided
   bool any_unhandled = false;
+  bool deferred = false;  // a rule waited for better-conditioned pairs (RuleOutput::defer)
 };
 
 void setUnhandled(SolveState& st, const std::string& why) {
@@ -90,6 +91,7 @@ restart:
       // The PMF rules are for exact values; a pair with a range goes only to the rules that
       // declare they handle ranges (Somani's), the rest is left to the matchers.
       const bool ranged = !list[i].exact() || !list[j].exact();
+      bool pair_deferred = false;
       for (const auto& entry : st.registry.rulesFor(list[i].kind, list[j].kind)) {
         const RuleInfo& rule = st.registry.rules()[entry.rule];
         if (ranged && !rule.handles_ranges) continue;
@@ -97,7 +99,10 @@ restart:
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();
         rule.fn(a, b, st.tol, out);
-        if (out.verdict == RuleVerdict::kNoChange) continue;
+        if (out.verdict == RuleVerdict::kNoChange) {
+          pair_deferred = pair_deferred || out.deferred;
+          continue;
+        }
         st.solution.noteRule(rule.firedName(out.fired).c_str());
         if (++steps > st.options.max_rule_steps) {
           setUnhandled(st, "the combination rules did not settle within " +
@@ -150,7 +155,11 @@ restart:
             break;
         }
       }
-      set.markTested(list[i], list[j]);
+      // A deferred pair is asked again in the round without the conditioning bound.
+      if (pair_deferred)
+        st.deferred = true;
+      else
+        set.markTested(list[i], list[j]);
     }
   }
   return SetOutcome::kCombined;
@@ -253,7 +262,15 @@ void runPending(SolveState& st) {
       break;
     }
     int steps = 0;
+    st.deferred = false;
     SetOutcome o = combineList(st, s, true, steps);
+    if (o == SetOutcome::kCombined && st.deferred) {
+      // What waited for better-conditioned pairs and is still there: decide it now.
+      const Tolerance bounded = st.tol;
+      st.tol.max_amplification = Tolerance().max_amplification;
+      o = combineList(st, s, true, steps);
+      st.tol = bounded;
+    }
     if (o == SetOutcome::kCombined) o = combineList(st, s, false, steps);
     if (o == SetOutcome::kUnhandled) break;
     if (o == SetOutcome::kInconsistent) continue;

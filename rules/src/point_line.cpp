@@ -68,17 +68,24 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
   }
   Vector3d f1, f2;
   closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
-  const double db = (f2 - f1).norm();
+  const double db = (f2 - f1).norm();  // the lines' distance: well conditioned at any angle
   const bool p0 = tol.zeroLength(p), q0 = tol.zeroLength(q);
+  // Where along the lines things happen is only known to rounding / sin θ.
+  const bool ill = tol.tooIllConditioned(1.0 / sin_theta);
   if (p0 && q0) {
-    if (db <= tol.length) return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
-    return out.fire(kIncompatible).incompatible("a point on two lines that do not meet");
+    if (db > tol.length)
+      return out.fire(kIncompatible).incompatible("a point on two lines that do not meet");
+    if (ill) return out.defer();
+    return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
   }
+  if ((p0 || q0) && ill && db <= (p0 ? q : p) + tol.length) return out.defer();
   if (p0) return pointsOnLineAtDistance(a, f1, a.d, sin_theta, db, q, tol, out);
   if (q0) return pointsOnLineAtDistance(a, f2, b.d, sin_theta, db, p, tol, out);
   if (db > p + q + tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
-  if (db > tol.length && tol.equalLength(db, p + q))
+  if (db > tol.length && tol.equalLength(db, p + q)) {
+    if (ill) return out.defer();
     return one(out.fire(kSkewTangent), pinPoint(a, f1 + (p / db) * (f2 - f1)));
+  }
 }
 
 void differentPoints(const Fundamental& a, const Fundamental& b, double da, const Tolerance& tol,

@@ -22,6 +22,8 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   if (std::abs(dn) > tol.angle) {
     // The line crosses the plane.
     if (da <= tol.length && tol.zeroLength(p)) {
+      // Along the line, the crossing is known to rounding / |d·n|.
+      if (tol.tooIllConditioned(1.0 / std::abs(dn))) return out.defer();
       const Vector3d x = pl.q + ((pp.q - pl.q).dot(n) / dn) * pl.d;
       return one(out.fire(kLineMeetsPlane), pinPoint(pl, x));
     }

@@ -19,6 +19,8 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (!tol.parallelUnit(cross.norm())) {
     // Fig. 3c: the same point on two planes lies on their intersection line.
     if (da > tol.length) return;  // different points: the matcher's plane∩plane line
+    // Across the planes, their meeting line is known to rounding / sin θ.
+    if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
     return one(out.fire(kPlanesMeet),
                onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
   }

@@ -28,6 +28,8 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (za) {
     // One mobile point at p from P_b and q from Q_b.
     if (tol.zeroLength(p) || tol.zeroLength(q)) return;  // pinned-point rules
+    // Nearly concentric spheres: where they meet is known to rounding × max(p, q) / d_b.
+    if (tol.tooIllConditioned(std::max(p, q) / db)) return out.defer();
     if (tol.equalLength(db, p + q))
       return one(out.fire(kTangentSpheres), pinPoint(a, a.q + p * u_b));
     if (tol.equalLength(db, std::abs(p - q)))

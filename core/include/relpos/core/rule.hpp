@@ -26,12 +26,14 @@ struct RuleOutput {
   RuleVerdict verdict = RuleVerdict::kNoChange;
   const char* reason = "";  // static text, for kIncompatible
   int fired = -1;           // which case of the rule applied (index into RuleInfo::cases)
+  bool deferred = false;    // no change for now: Tolerance::tooIllConditioned (asked again later)
   FixedVector<FixedVector<Fundamental, kMaxRuleOutputs>, kMaxRuleAlternatives> alternatives;
 
   void reset() {
     verdict = RuleVerdict::kNoChange;
     reason = "";
     fired = -1;
+    deferred = false;
     alternatives.clear();
   }
   // Records which case of the rule applies; returns *this for chaining.
@@ -42,6 +44,11 @@ struct RuleOutput {
   void incompatible(const char* why) {
     verdict = RuleVerdict::kIncompatible;
     reason = why;
+  }
+  // Leaves the pair unchanged for the first round of combination (see Tolerance).
+  void defer() {
+    verdict = RuleVerdict::kNoChange;
+    deferred = true;
   }
   void redundantFirst() { verdict = RuleVerdict::kRedundantFirst; }
   void redundantSecond() { verdict = RuleVerdict::kRedundantSecond; }

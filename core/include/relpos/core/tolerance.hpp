@@ -8,6 +8,16 @@ namespace relpos {
 struct Tolerance {
   double length = 1e-9;  // absolute length tolerance, already scaled
   double angle = 1e-9;   // radians
+  // How much a rule may magnify the coordinates' rounding in what it builds (a point where lines
+  // 1e-8 rad apart cross is uncertain along them by rounding / 1e-8). The solver first combines
+  // with a bound, so that a well-conditioned pair decides before an ill-conditioned one whose
+  // output would be off by more than a third constraint's tolerance, then without one.
+  double max_amplification = 1e300;
+  // Whether a rule building something `amplification` times as uncertain as its inputs should
+  // wait (RuleOutput::defer) for the pairs that can decide it better.
+  bool tooIllConditioned(double amplification) const {
+    return !(amplification <= max_amplification);
+  }
 
   static Tolerance forScale(double scale, double relative_length = 1e-9, double angle = 1e-9) {
     Tolerance t;
