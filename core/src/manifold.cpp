@@ -161,6 +161,17 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
 
 }  // namespace
 
+Params referenceParams(const Manifold& m) {
+  Params t{};
+  for (int i = 0, n = m.dof(); i < n; ++i) {
+    const Parameter p = m.parameter(i);
+    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
+    t[i] = lo && hi ? 0.5 * (p.min + p.max) : (lo ? p.min : (hi ? p.max : 0.0));
+    if (std::isnan(p.min) || std::isnan(p.max)) t[i] = p.min + p.max;  // NaN: seen by the check
+  }
+  return t;
+}
+
 Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // The projection is exact for poses on the manifold and usually the right basin elsewhere; a
   // coarse grid over the angle parameters catches the other basins of the combined metric
@@ -170,6 +181,11 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   const unsigned fixed = m.closedFormParams();
   Params proj = m.project(X);
   double proj_d = distanceWithTail(m, X, fixed, &proj);
+  if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
+    proj = referenceParams(m);
+    proj_d = distanceWithTail(m, X, fixed, &proj);
+    if (std::isnan(proj_d)) return referenceParams(m);
+  }
   if (fixed == (1u << n) - 1u || proj_d == 0.0) return proj;
   Parameter par[kMaxDof];
   int angles[kMaxDof], n_angles = 0;

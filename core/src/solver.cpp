@@ -355,19 +355,6 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   return true;
 }
 
-// A point of the branch to check: every parameter at the middle of its bounds (0 for a full turn),
-// at its finite bound when it has one, else 0. False when a bound is NaN.
-bool referenceParameters(const Manifold& m, int dof, Params* t) {
-  *t = Params{};
-  for (int i = 0; i < dof; ++i) {
-    const Parameter p = m.parameter(i);
-    if (std::isnan(p.min) || std::isnan(p.max)) return false;
-    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
-    (*t)[i] = lo && hi ? 0.5 * (p.min + p.max) : (lo ? p.min : (hi ? p.max : 0.0));
-  }
-  return true;
-}
-
 // The last check before a solution leaves the solver: one pose of every branch, evaluated against
 // every input constraint by its type's own reading of the spec (ConstraintType::violation), not
 // by the rules that built the branch. A branch that breaks a constraint by far more than any
@@ -388,10 +375,10 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
     checks.push_back({registry.constraintType(c.type), c.fixed.placed(problem.fixed.pose)});
   for (std::size_t b = 0; b < solution.branches.size(); ++b) {
     const Manifold& m = *solution.branches[b].manifold;
-    Params theta;
-    bool finite = referenceParameters(m, m.dof(), &theta);
+    const Params theta = referenceParams(m);  // a NaN bound makes a NaN parameter
     const Isometry3d X = m.pose(theta);
-    finite = finite && X.matrix().allFinite();
+    bool finite = X.matrix().allFinite();
+    for (int i = 0; i < kMaxDof; ++i) finite = finite && !std::isnan(theta[i]);
     double worst = finite ? 0.0 : std::numeric_limits<double>::infinity();
     std::size_t which = 0;
     for (std::size_t i = 0; finite && i < n; ++i) {

@@ -135,6 +135,12 @@ class ManifoldHolder {
 // Distance used for "nearest" (SPEC.md §2): translation distance plus rotation angle.
 double poseDistance(const Isometry3d& a, const Isometry3d& b);
 
+// A point of every manifold: each parameter at the middle of its bounds (0 for a full turn), at
+// its finite bound when it has only one, else 0 (NaN for a NaN bound). The solver checks every
+// branch there, so its pose is finite; the nearest-pose search falls back to it where a
+// projection is not.
+Params referenceParams(const Manifold& m);
+
 // The pose of manifold m nearest to X: m.project(X) refined by a deterministic pattern search on
 // poseDistance within the parameter bounds. Never worse than the projection.
 Params nearestParams(const Manifold& m, const Isometry3d& X);
