@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <utility>
 
+#include "mesh_precheck.hpp"
 #include "relpos/collision/mesh.hpp"
 
 namespace relpos::collision {
@@ -16,10 +18,28 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
 
-bool supportedExtension(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool supportedExtension(const std::string& path) {
+  const std::string ext = lowerExtension(path);
   return ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply";
+}
+
+// What would make CGAL's reader misbehave on the file ("" when nothing). OFF and PLY state counts
+// that CGAL trusts; STL and OBJ have none (CGAL grows its arrays as it reads, and the indices are
+// range-checked below).
+std::string precheck(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext != ".off" && ext != ".ply") return "";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) return "";  // CGAL reports it
+  return ext == ".off" ? detail::precheckOff(text.str()) : detail::precheckPly(text.str());
 }
 
 }  // namespace
@@ -47,6 +67,10 @@ bool readMesh(const std::string& path, Mesh* mesh, std::string* error,
   }
   if (!supportedExtension(path)) {
     *error = "unsupported mesh format (expected .stl, .obj, .off or .ply)";
+    return false;
+  }
+  if (const std::string problem = precheck(path); !problem.empty()) {
+    *error = "unreadable mesh: " + problem;
     return false;
   }
   std::vector<Kernel::Point_3> points;
