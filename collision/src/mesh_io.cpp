@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <utility>
 
 #include "mesh_precheck.hpp"
@@ -36,10 +35,13 @@ std::string precheck(const std::string& path) {
   const std::string ext = lowerExtension(path);
   if (ext != ".off" && ext != ".ply") return "";
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) return "";  // CGAL reports it
-  return ext == ".off" ? detail::precheckOff(text.str()) : detail::precheckPly(text.str());
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!in || ec) return "";  // CGAL reports it
+  std::string text(size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return ext == ".off" ? detail::precheckOff(text) : detail::precheckPly(text);
 }
 
 }  // namespace
@@ -69,14 +71,14 @@ bool readMesh(const std::string& path, Mesh* mesh, std::string* error,
     *error = "unsupported mesh format (expected .stl, .obj, .off or .ply)";
     return false;
   }
-  if (const std::string problem = precheck(path); !problem.empty()) {
-    *error = "unreadable mesh: " + problem;
-    return false;
-  }
   std::vector<Kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> faces;
   bool ok = false;
   try {
+    if (const std::string problem = precheck(path); !problem.empty()) {
+      *error = "unreadable mesh: " + problem;
+      return false;
+    }
     ok = CGAL::IO::read_polygon_soup(path, points, faces, CGAL::parameters::verbose(false));
   } catch (const std::exception& e) {
     *error = std::string("unreadable mesh: ") + e.what();

@@ -70,7 +70,7 @@ bool validColour(const std::vector<double>& e, std::size_t first, std::size_t co
 }  // namespace
 
 std::string precheckOff(const std::string& text) {
-  std::istringstream in(text);
+  TextStream in(text);
   // The header, as File_header_OFF's operator>> reads it: comment lines, the keyword (and the
   // character after it), then the counts.
   char c = 0;

@@ -67,7 +67,7 @@ enum class Format { kAscii, kLittleEndian, kBigEndian };
 // The file's body, read value by value as PLY_read_number::read reads it.
 class Body {
  public:
-  Body(std::istringstream& in, const std::string& text, Format format)
+  Body(std::istream& in, const std::string& text, Format format)
       : in_(in), text_(text), format_(format), at_(offset()) {}
 
   // What is left of the file, in bytes.
@@ -166,7 +166,7 @@ class Body {
     return at < 0 ? text_.size() : static_cast<std::size_t>(at);
   }
 
-  std::istringstream& in_;
+  std::istream& in_;
   const std::string& text_;
   Format format_;
   std::size_t at_;  // binary: the next byte
@@ -174,7 +174,7 @@ class Body {
 
 // The header's format and elements. False when it is not usable, with what is wrong in `error`
 // ("" for a header CGAL refuses by itself).
-bool readHeader(std::istringstream& in, Format* format, std::vector<Element>* elements,
+bool readHeader(std::istream& in, Format* format, std::vector<Element>* elements,
                 std::string* error) {
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -230,7 +230,7 @@ bool readHeader(std::istringstream& in, Format* format, std::vector<Element>* el
 }  // namespace
 
 std::string precheckPly(const std::string& text) {
-  std::istringstream in(text);
+  TextStream in(text);
   Format format = Format::kAscii;
   std::vector<Element> elements;
   std::string error;
