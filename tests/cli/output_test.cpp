@@ -154,6 +154,13 @@ TEST(CliOutput, BatchOnAFullDiskKeepsCompleteLinesAndSaysWhy) {
       0u)
       << full.err;
   EXPECT_EQ(lineCount(full.err), 1) << full.err;
+  const CmdResult stdout_full =
+      runShell(std::string(RELPOS_EXE) + " batch " + kBatchSample + " >/dev/full");
+  EXPECT_EQ(stdout_full.code, 1);
+  EXPECT_EQ(stdout_full.err.rfind(
+                std::string("relpos: standard output: cannot write: ") + std::strerror(ENOSPC), 0),
+            0u)
+      << stdout_full.err;
 }
 
 TEST(CliOutput, SolveOnAFullDiskLeavesNothingBehind) {
