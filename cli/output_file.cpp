@@ -37,6 +37,7 @@ bool usersToFix(int err) {
   }
 }
 
+// (Callers read errno before they build the message: an allocation may change it.)
 [[noreturn]] void throwFor(int err, const std::string& message) {
   const std::string text = message + ": " + std::strerror(err);
   if (usersToFix(err)) throw InvalidInput(text);
@@ -90,7 +91,10 @@ mode_t newFileMode() {
 // Writes text into a file that is not a regular file (a device, a FIFO): nothing to replace.
 void writeInPlace(const std::string& path, std::string_view text) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-  if (fd < 0) throwFor(errno, "-o " + inQuotes(path) + ": cannot open");
+  if (fd < 0) {
+    const int err = errno;
+    throwFor(err, "-o " + inQuotes(path) + ": cannot open");
+  }
   bool ok = writeAll(fd, text);
   int err = errno;
   if (::close(fd) != 0 && ok) ok = false, err = errno;
@@ -113,23 +117,30 @@ void checkOutput(const std::string& out, const std::vector<std::string>& inputs,
     }
     if (mode == OutputMode::kStream || !S_ISREG(st.st_mode)) {
       // Written in place: the file itself must be writable.
-      if (::access(out.c_str(), W_OK) != 0) throwFor(errno, option + ": cannot write");
+      if (::access(out.c_str(), W_OK) != 0) {
+        const int err = errno;
+        throwFor(err, option + ": cannot write");
+      }
       return;
     }
     folder = folderOf(fs::canonical(out).string());  // where the temporary file will go
   } else {
-    if (errno != ENOENT && errno != ENOTDIR) throwFor(errno, option);
+    const int err = errno;
+    if (err != ENOENT && err != ENOTDIR) throwFor(err, option);
     folder = folderOf(out);
   }
   struct stat sf {};
   if (::stat(folder.c_str(), &sf) != 0) {
-    if (errno == ENOENT) throw InvalidInput(option + ": no such directory " + inQuotes(folder));
-    throwFor(errno, option + ": " + inQuotes(folder));
+    const int err = errno;
+    if (err == ENOENT) throw InvalidInput(option + ": no such directory " + inQuotes(folder));
+    throwFor(err, option + ": " + inQuotes(folder));
   }
   if (!S_ISDIR(sf.st_mode))
     throw InvalidInput(option + ": " + inQuotes(folder) + " is not a directory");
-  if (::access(folder.c_str(), W_OK | X_OK) != 0)
-    throwFor(errno, option + ": cannot write in " + inQuotes(folder));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    const int err = errno;
+    throwFor(err, option + ": cannot write in " + inQuotes(folder));
+  }
 }
 
 void replaceFile(const std::string& path, std::string_view text) {
@@ -149,8 +160,10 @@ void replaceFile(const std::string& path, std::string_view text) {
   const mode_t mode = exists ? (st.st_mode & 07777) : newFileMode();
   SignalsHeld held;
   int fd = ::mkostemp(temporary.data(), O_CLOEXEC);
-  if (fd < 0)
-    throwFor(errno, "-o " + inQuotes(path) + ": cannot create a file in " + inQuotes(folder));
+  if (fd < 0) {
+    const int err = errno;
+    throwFor(err, "-o " + inQuotes(path) + ": cannot create a file in " + inQuotes(folder));
+  }
   const auto fail = [&](int err) {
     if (fd >= 0) ::close(fd);
     ::unlink(temporary.c_str());
@@ -175,7 +188,10 @@ LineSink::LineSink() : fd_(STDOUT_FILENO), owned_(false), name_("standard output
 
 LineSink::LineSink(const std::string& path) : owned_(true), name_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd_ < 0) throwFor(errno, "-o " + inQuotes(path) + ": cannot open");
+  if (fd_ < 0) {
+    const int err = errno;
+    throwFor(err, "-o " + inQuotes(path) + ": cannot open");
+  }
   struct stat st {};
   truncatable_ = ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
 }
