@@ -20,7 +20,9 @@
 
 #include "cli.hpp"
 #include "file_text.hpp"
+#include "output_file.hpp"
 #include "relpos/core/solver.hpp"
+#include "safe_text.hpp"
 
 namespace relpos::cli {
 namespace {
@@ -88,13 +90,18 @@ void collectItems(const std::string& path, Input* input) {
   }
 }
 
-nlohmann::ordered_json invalidLine(const std::string& name, const std::string& message) {
-  nlohmann::ordered_json j;
-  j["relpos"] = 1;
-  j["name"] = name;
-  j["status"] = "invalid";
-  j["message"] = message;
-  return j;
+// A result line without branches: {"relpos":1,"name":…,"status":…,"message":…}. Written by hand,
+// not through a JSON library, so that nothing in the name or message (a cut UTF-8 sequence
+// quoted from a malformed line, a control character) can make writing it fail.
+std::string statusLine(const std::string& name, const char* status, const std::string& message) {
+  std::string line = "{\"relpos\":1,\"name\":";
+  appendJsonString(line, name);
+  line += ",\"status\":\"";
+  line += status;
+  line += "\",\"message\":";
+  appendJsonString(line, message);
+  line += '}';
+  return line;
 }
 
 // "SOURCE: json.path: what" for every problem, joined by "; ".
@@ -124,6 +131,7 @@ struct WorkerState {
   Workspace ws;
   Solution sol;
   std::string text, line;  // the spec's text, its result line
+  std::string name;        // the spec's name once it is known (for a line about a failure)
 };
 
 // Parses and solves one spec: its result line into state.line (every problem of an invalid spec
@@ -133,6 +141,7 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
   Solution& sol = state.sol;
   const auto t0 = Clock::now();
   Outcome out;
+  state.name.clear();
   ParseResult parsed;
   if (!item.file.empty()) {
     parsed = parseSpecFile(item.file, reg);
@@ -143,28 +152,55 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
   if (!parsed.problem) {
     out.name = specName(input, item);
     out.status = "invalid";
-    state.line = invalidLine(out.name, joined(input.source(item), parsed.errors)).dump();
+    state.line = statusLine(out.name, "invalid", joined(input.source(item), parsed.errors));
   } else {
     const Problem& pb = *parsed.problem;
+    state.name = pb.name;
     solve(pb, reg, SolverOptions(), state.ws, sol);
     out.name = pb.name;
     out.status = toString(sol.status);
     if (!a.collision) {
       writeResultLine(pb, sol, a.result, state.line);  // no JSON tree: the common, fast case
     } else {
-      nlohmann::ordered_json result = resultToJson(pb, sol, a.result);
+      nlohmann::ordered_json result = resultTree(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
-      if (!collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors, &warnings)) {
-        result = invalidLine(pb.name, joined(input.source(item), errors));
+      if (collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors, &warnings)) {
+        state.line = result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+      } else {
+        state.line = statusLine(pb.name, "invalid", joined(input.source(item), errors));
         out.status = "invalid";
       }
-      state.line = result.dump();
     }
+    // Names come from the input (a file name may hold any byte): the line is UTF-8 whatever they
+    // hold. Almost every line is, and checking costs a pass over it.
+    if (!isValidUtf8(state.line)) state.line = validUtf8(state.line);
     if (out.status != "invalid")
       for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
     out.solve_us = sol.solve_us;
   }
   out.total_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+  return out;
+}
+
+// run(), with whatever it throws turned into the spec's result line ("unhandled", the reason):
+// nothing one spec does (a plugin that throws, a library that fails) may take down the batch and
+// the lines other specs finished.
+Outcome runGuarded(const Input& input, const Item& item, const Args& a, const Registry& reg,
+                   collision::MeshCache& cache, std::unique_ptr<WorkerState>& state) {
+  std::string what;
+  try {
+    return run(input, item, a, reg, cache, *state);
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+    what = "an exception that is not a std::exception";
+  }
+  Outcome out;
+  out.name = state->name.empty() ? input.defaultName(item) : state->name;
+  out.status = "unhandled";
+  // The solver's buffers may be half-way through a solve: the next spec starts from fresh ones.
+  state = std::make_unique<WorkerState>();
+  state->line = statusLine(out.name, "unhandled", "internal error: " + what);
   return out;
 }
 
@@ -214,7 +250,7 @@ void printSummary(const std::vector<Outcome>& outcomes, std::size_t written, dou
   });
   s << "  slowest solves:";
   for (std::size_t k = 0; k < std::min<std::size_t>(5, order.size()); ++k)
-    s << " " << outcomes[order[k]].name << " (" << outcomes[order[k]].solve_us << " us)";
+    s << " " << oneLine(outcomes[order[k]].name) << " (" << outcomes[order[k]].solve_us << " us)";
   s << "\n";
   std::cerr << s.str();
 }
@@ -230,17 +266,27 @@ int cmdBatch(const Args& a, const Registry& reg) {
   const std::vector<Item>& items = input.items;
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
 
-  std::ofstream file;
-  if (!a.out.empty()) {
-    file.open(a.out, std::ios::binary | std::ios::trunc);
-    if (!file) throw UsageError("cannot write '" + a.out + "'");
+  // -o is checked against the inputs before anything is opened for writing: truncating the
+  // JSONL file this batch has mapped would destroy the input (and kill the batch with SIGBUS).
+  std::unique_ptr<LineSink> sink;
+  if (a.out.empty()) {
+    sink = std::make_unique<LineSink>();
+  } else {
+    std::vector<std::string> inputs;
+    if (input.path.empty())
+      for (const auto& item : items) inputs.push_back(item.file);
+    else
+      inputs.push_back(input.path);
+    checkOutput(a.out, inputs, OutputMode::kStream);
+    sink = std::make_unique<LineSink>(a.out);
   }
-  std::ostream& out = a.out.empty() ? std::cout : file;
   // The bar goes to stderr, on a terminal, unless the result lines go to that terminal too.
   const bool progress = isatty(STDERR_FILENO) && !(a.out.empty() && isatty(STDOUT_FILENO));
 
   g_interrupted.store(false);
   auto previous = std::signal(SIGINT, onInterrupt);
+  std::atomic<bool> write_failed{false};  // the output refused a write: no point going on
+  const auto stopping = [&] { return g_interrupted.load() || write_failed.load(); };
 
   std::vector<Outcome> outcomes(items.size());
   std::unique_ptr<std::atomic<bool>[]> done(new std::atomic<bool>[items.size()]);
@@ -255,17 +301,17 @@ int cmdBatch(const Args& a, const Registry& reg) {
   std::atomic<std::size_t> written{0};
   collision::MeshCache cache;
   auto worker = [&] {
-    WorkerState state;
+    auto state = std::make_unique<WorkerState>();
     for (;;) {
-      if (g_interrupted.load()) return;
+      if (stopping()) return;
       const std::size_t i = next_item.fetch_add(1);
       if (i >= items.size()) return;
-      outcomes[i] = run(input, items[i], a, reg, cache, state);
+      outcomes[i] = runGuarded(input, items[i], a, reg, cache, state);
       while (i >= written.load(std::memory_order_acquire) + kSlots) {
-        if (g_interrupted.load()) return;
+        if (stopping()) return;
         std::this_thread::sleep_for(std::chrono::microseconds(100));
       }
-      slots[i % kSlots].assign(state.line);
+      slots[i % kSlots].assign(state->line);
       done[i].store(true, std::memory_order_release);
     }
   };
@@ -275,24 +321,28 @@ int cmdBatch(const Args& a, const Registry& reg) {
 
   // Write in order: line i as soon as lines 0..i are finished.
   auto last_draw = Clock::now();
-  // Lines go out in chunks of about 1 MB: a stream hands a line of a kilobyte or more straight
-  // to the system, one call per line, and at 100,000 lines a second those calls were a tenth of
-  // a core taken from the workers.
+  // Lines go out in chunks of about 1 MB: one system call per line, at 100,000 lines a second,
+  // was a tenth of a core taken from the workers. Each chunk holds whole lines, so the end of
+  // the last chunk written is the end of a complete line.
   std::string pending;
+  std::size_t pending_lines = 0;
   auto writePending = [&] {
-    out.write(pending.data(), static_cast<std::streamsize>(pending.size()));
+    if (!pending.empty() && !write_failed.load() && !sink->write(pending, pending_lines))
+      write_failed.store(true);
     pending.clear();
+    pending_lines = 0;
   };
   auto writeReady = [&] {
     std::size_t w = written.load();
-    while (w < items.size() && done[w].load(std::memory_order_acquire)) {
+    while (w < items.size() && done[w].load(std::memory_order_acquire) && !write_failed.load()) {
       pending += slots[w % kSlots];
       pending += '\n';
+      ++pending_lines;
       written.store(++w, std::memory_order_release);
       if (pending.size() >= (std::size_t{1} << 20)) writePending();
     }
   };
-  while (written.load() < items.size() && !g_interrupted.load()) {
+  while (written.load() < items.size() && !stopping()) {
     writeReady();
     if (progress && Clock::now() - last_draw > std::chrono::milliseconds(100)) {
       drawProgress(written.load(), items.size(),
@@ -304,19 +354,16 @@ int cmdBatch(const Args& a, const Registry& reg) {
   for (auto& t : threads) t.join();
   writeReady();  // after an interruption: every line finished before it, still in order
   writePending();
-  out.flush();
+  const bool closed = sink->close();
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   if (progress) {
     drawProgress(written.load(), items.size(), seconds);
     std::fputc('\n', stderr);
   }
   std::signal(SIGINT, previous);
+  if (write_failed.load() || !closed) throw WriteFailed(sink->error());
   const bool interrupted = written.load() < items.size();
   printSummary(outcomes, written.load(), seconds, jobs, interrupted);
-  if (!out) {
-    std::cerr << "relpos: cannot write the results\n";
-    return kExitInternal;
-  }
   return interrupted ? kExitInterrupted : kExitOk;
 }
 

@@ -2,19 +2,15 @@
 // What the relpos command's files share: options, exit codes, spec discovery, collision fields.
 #include <istream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "errors.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/spec_io.hpp"
 
 namespace relpos::cli {
-
-inline constexpr int kExitOk = 0, kExitInternal = 1, kExitInvalid = 2;
-// Batch interrupted by Ctrl-C (the results written so far are complete lines, in order).
-inline constexpr int kExitInterrupted = 130;
 
 inline const char* const kUsage =
     "usage:\n"
@@ -25,16 +21,13 @@ inline const char* const kUsage =
     "  relpos batch DIR-or-FILE.jsonl [--jobs N] [-o OUT.jsonl] [solve options]\n"
     "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 struct Args {
   int jobs = 0;  // batch: worker threads (0: every core)
   std::vector<std::string> positional;
   bool coverage = false;
   relpos::ResultOptions result;
-  std::string out;
+  std::string out;  // -o
+  bool out_given = false;
   int repeat = 200;
   std::vector<std::string> plugins;
   bool allow_override = false;
@@ -48,6 +41,11 @@ std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
 
 // Everything left in the stream, read in chunks (it may be a pipe, whose size is unknown).
 std::string readAll(std::istream& in);
+
+// resultToJson for any input: the result line is made valid UTF-8 before it is parsed (a default
+// name taken from a file name may hold any byte, and parsing it would throw).
+nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solution& sol,
+                                  const relpos::ResultOptions& options);
 
 // Adds SPEC.md §2's collision fields to a result: a `collision` object per branch and
 // `collision_free_branches`. False when the scene cannot be built (errors say why).

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -17,12 +18,14 @@
 
 #include "cli.hpp"
 #include "file_text.hpp"
+#include "output_file.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"
+#include "safe_text.hpp"
 
 namespace fs = std::filesystem;
 using relpos::Registry;
@@ -70,7 +73,7 @@ Args parseArgs(int argc, char** argv, int first) {
       a.filter.samples = static_cast<int>(parseInt(s, value(), 0, 1000000)),
       a.collision_option = true;
     else if (s == "-o")
-      a.out = value();
+      a.out = value(), a.out_given = true;
     else if (s == "--coverage")
       a.coverage = true;
     else if (s == "--plugin")
@@ -87,26 +90,32 @@ Args parseArgs(int argc, char** argv, int first) {
   return a;
 }
 
-// Writes text to path atomically (temporary file + rename), so a failure never leaves a partial
-// result behind.
-void writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write '" + tmp + "'");
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write '" + tmp + "'");
-  }
-  fs::rename(tmp, path);
+// Diagnostics go to stderr one per line, whatever the names they quote hold (a newline, 0xFF).
+void printDiagnostics(const std::string& file, const std::vector<relpos::Diagnostic>& errors,
+                      const std::vector<relpos::Diagnostic>& warnings) {
+  for (const auto& w : warnings)
+    std::cerr << oneLine(relpos::formatDiagnostic(file, w)) << " (warning)\n";
+  for (const auto& e : errors) std::cerr << oneLine(relpos::formatDiagnostic(file, e)) << "\n";
 }
 
 bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* pb) {
+  std::error_code ec;
+  if (fs::is_directory(file, ec)) {  // opening it succeeds, reading it fails: say what it is
+    std::cerr << oneLine(file + ": is a directory, not a spec file") << "\n";
+    return false;
+  }
   relpos::ParseResult r = relpos::parseSpecFile(file, reg);
-  for (const auto& w : r.warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
-  for (const auto& e : r.errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+  printDiagnostics(file, r.errors, r.warnings);
   if (!r.problem) return false;
   *pb = std::move(*r.problem);
   return true;
+}
+
+nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solution& sol,
+                                  const relpos::ResultOptions& options) {
+  std::string line;
+  relpos::writeResultLine(pb, sol, options, line);
+  return nlohmann::ordered_json::parse(isValidUtf8(line) ? line : validUtf8(line));
 }
 
 bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,
@@ -145,8 +154,7 @@ bool addCollisionFields(const std::string& file, const Args& a, const relpos::Pr
   std::vector<relpos::Diagnostic> errors, warnings;
   const bool ok = collisionFields(fs::path(file).parent_path().string(), a, pb, sol, cache, result,
                                   &errors, &warnings);
-  for (const auto& w : warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
-  for (const auto& e : errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
+  printDiagnostics(file, errors, warnings);
   return ok;
 }
 
@@ -154,18 +162,25 @@ int cmdSolve(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("solve takes exactly one spec file");
   if (a.collision_option && !a.collision)
     throw UsageError("--clearance and --collision-samples need --collision");
+  // Before solving: an -o that cannot be written is known now, not after the work.
+  if (!a.out.empty()) checkOutput(a.out, a.positional, OutputMode::kReplace);
   relpos::Problem pb;
   if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
   relpos::Workspace ws;
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
-  nlohmann::ordered_json result = relpos::resultToJson(pb, sol, a.result);
+  nlohmann::ordered_json result = resultTree(pb, sol, a.result);
   if (a.collision && !addCollisionFields(a.positional[0], a, pb, sol, &result)) return kExitInvalid;
-  const std::string text = result.dump(2) + "\n";
-  if (a.out.empty())
-    std::cout << text;
-  else
-    writeFileAtomically(a.out, text);
+  // Strings from the input (a default name from a file name holding 0xFF) may not be UTF-8:
+  // replaced, where the default handler would throw.
+  const std::string text =
+      result.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  if (!a.out.empty()) {
+    replaceFile(a.out, text);
+    return kExitOk;
+  }
+  std::cout << text << std::flush;
+  if (!std::cout) throw WriteFailed("standard output: cannot write the result");
   return kExitOk;
 }
 
@@ -281,7 +296,7 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   for (const auto& item : items) {
     std::string error;
     if (!relpos::plugins::loadPlugin(item.path, reg, &error, options)) {
-      std::cerr << "relpos: " << item.where << error << "\n";
+      std::cerr << "relpos: " << oneLine(item.where + error) << "\n";
       return false;
     }
   }
@@ -328,7 +343,7 @@ int cmdTable(const Args& a, const Registry& reg) {
   for (const auto& f : files) {
     relpos::Problem pb;
     if (!loadProblem(f, reg, &pb)) {
-      std::printf("%-36s %-13s\n", fs::path(f).stem().string().c_str(), "invalid");
+      std::printf("%-36s %-13s\n", oneLine(fs::path(f).stem().string()).c_str(), "invalid");
       ++invalid;
       continue;
     }
@@ -344,10 +359,11 @@ int cmdTable(const Args& a, const Registry& reg) {
       std::string d = std::to_string(b.manifold->dof());
       if (dofs.find(d) == std::string::npos) dofs += (dofs.empty() ? "" : ",") + d;
     }
-    std::printf("%-36s %-13s %8zu %-12s %10.2f", pb.name.c_str(), relpos::toString(sol.status),
-                sol.branches.size(), dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
+    std::printf("%-36s %-13s %8zu %-12s %10.2f", oneLine(pb.name).c_str(),
+                relpos::toString(sol.status), sol.branches.size(),
+                dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
     if (a.collision) {  // the collision-free branches (SPEC.md §2 collision_free_branches)
-      nlohmann::ordered_json result = relpos::resultToJson(pb, sol, a.result);
+      nlohmann::ordered_json result = resultTree(pb, sol, a.result);
       if (addCollisionFields(f, a, pb, sol, &result))
         std::printf("  %13d", result["collision_free_branches"].get<int>());
       else
@@ -364,6 +380,9 @@ int cmdTable(const Args& a, const Registry& reg) {
 using namespace relpos::cli;
 
 int main(int argc, char** argv) {
+  // Past a file size limit (ulimit -f) a write fails with EFBIG and is reported like a full disk,
+  // instead of the signal killing the process half-way through a line.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     if (argc < 2) throw UsageError("missing command");
     const std::string cmd = argv[1];
@@ -372,6 +391,9 @@ int main(int argc, char** argv) {
       return kExitOk;
     }
     Args a = parseArgs(argc, argv, 2);
+    if (a.out_given && a.out.empty()) throw InvalidInput("-o: an empty path");
+    if (a.out_given && cmd != "solve" && cmd != "batch")
+      throw InvalidInput("-o: '" + cmd + "' writes to standard output only");
     Registry reg;
     relpos::registerBuiltins(reg);
     if (!loadPlugins(cmd, a, reg)) return kExitInvalid;
@@ -382,10 +404,16 @@ int main(int argc, char** argv) {
     if (cmd == "batch") return cmdBatch(a, reg);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
-    std::cerr << "relpos: " << e.what() << "\n" << kUsage;
+    std::cerr << "relpos: " << oneLine(e.what()) << "\n" << kUsage;
     return kExitInvalid;
+  } catch (const InvalidInput& e) {
+    std::cerr << "relpos: " << oneLine(e.what()) << "\n";
+    return kExitInvalid;
+  } catch (const WriteFailed& e) {
+    std::cerr << "relpos: " << oneLine(e.what()) << "\n";
+    return kExitInternal;
   } catch (const std::exception& e) {
-    std::cerr << "relpos: internal error: " << e.what() << "\n";
+    std::cerr << "relpos: internal error: " << oneLine(e.what()) << "\n";
     return kExitInternal;
   }
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <utility>
 
+#include "mesh_precheck.hpp"
 #include "relpos/collision/mesh.hpp"
 
 namespace relpos::collision {
@@ -16,10 +17,31 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<double>;
 
-bool supportedExtension(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool supportedExtension(const std::string& path) {
+  const std::string ext = lowerExtension(path);
   return ext == ".stl" || ext == ".obj" || ext == ".off" || ext == ".ply";
+}
+
+// What would make CGAL's reader misbehave on the file ("" when nothing). OFF and PLY state counts
+// that CGAL trusts; STL and OBJ have none (CGAL grows its arrays as it reads, and the indices are
+// range-checked below).
+std::string precheck(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext != ".off" && ext != ".ply") return "";
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!in || ec) return "";  // CGAL reports it
+  std::string text(size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return ext == ".off" ? detail::precheckOff(text) : detail::precheckPly(text);
 }
 
 }  // namespace
@@ -53,6 +75,10 @@ bool readMesh(const std::string& path, Mesh* mesh, std::string* error,
   std::vector<std::vector<std::size_t>> faces;
   bool ok = false;
   try {
+    if (const std::string problem = precheck(path); !problem.empty()) {
+      *error = "unreadable mesh: " + problem;
+      return false;
+    }
     ok = CGAL::IO::read_polygon_soup(path, points, faces, CGAL::parameters::verbose(false));
   } catch (const std::exception& e) {
     *error = std::string("unreadable mesh: ") + e.what();

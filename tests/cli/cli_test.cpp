@@ -12,46 +12,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_run.hpp"
 #include "test_config.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CmdResult {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-fs::path scratchDir() {
-  fs::path d =
-      fs::temp_directory_path() /
-      ("relpos_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::create_directories(d);
-  return d;
-}
-
-CmdResult run(const std::string& args) {
-  fs::path d = scratchDir();
-  std::string cmd = std::string(RELPOS_EXE) + " " + args + " >" + (d / "out").string() + " 2>" +
-                    (d / "err").string();
-  int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(d / "out"), slurp(d / "err")};
-}
-
-fs::path writeSpec(const std::string& name, const std::string& text) {
-  fs::path p = scratchDir() / name;
-  std::ofstream(p) << text;
-  return p;
-}
+using namespace relpos::test;
 
 const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
 
