@@ -99,6 +99,21 @@ BENCHMARK_CAPTURE(BM_NearestByKind, cup, std::string("cup-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, tray, std::string("tray-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, weld, std::string("weld-seam"));
 
+// Writing the result line alone (no parse, no solve): the problems are solved once up front.
+void BM_Write(benchmark::State& state) {
+  const auto ps = problems();
+  std::vector<relpos::Solution> sols;
+  for (const auto& p : ps) sols.push_back(relpos::solve(p, relpos::builtinRegistry()));
+  std::string out;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % ps.size();
+    relpos::writeResultLine(ps[k], sols[k], relpos::ResultOptions(), out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_Write);
+
 void BM_WholeLine(benchmark::State& state) {
   relpos::Workspace ws;
   relpos::Solution s;
