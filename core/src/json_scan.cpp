@@ -5,6 +5,7 @@
 #include <stdlib.h>  // strtod_l (glibc)
 
 #include <cmath>
+#include <cstdlib>
 
 #include "json_path.hpp"
 #include "utf8.hpp"
@@ -44,6 +45,8 @@ double jsonNumberValue(std::string_view token) {
   // program's locale.
   static const locale_t c_locale = newlocale(LC_ALL_MASK, "C", static_cast<locale_t>(nullptr));
   const std::string nul_terminated(token);
+  if (c_locale == static_cast<locale_t>(nullptr))  // (no memory for it: the program's locale)
+    return std::strtod(nul_terminated.c_str(), nullptr);
   return strtod_l(nul_terminated.c_str(), nullptr, c_locale);
 }
 
