@@ -28,15 +28,24 @@ struct Frame {
 // What a thread keeps from one document to the next: the parser's buffers and the walk's
 // stacks (no allocation per spec).
 struct ThreadState {
-  dom::parser parser;
+  dom::parser parser = newParser();
   std::vector<Frame> stack;
   std::vector<std::string_view> keys;
-  ThreadState() {
+
+  static dom::parser newParser() {
+    dom::parser p;
     // simdjson counts a scalar inside the deepest container as one level more than relpos does:
     // its own limit is set a little above relpos's, which checkKeys applies (kMaxJsonDepth).
-    if (parser.allocate(std::size_t{1} << 16, kMaxJsonDepth + 8) != simdjson::SUCCESS) {
+    if (p.allocate(std::size_t{1} << 16, kMaxJsonDepth + 8) != simdjson::SUCCESS) {
       // Out of memory: parse() retries the allocation (with simdjson's default depth).
     }
+    return p;
+  }
+  // A parser keeps the buffers of the largest document it has read (about ten times its size):
+  // after a huge one, a batch's threads go back to small buffers for the usual specs.
+  void fitTo(std::size_t length) {
+    constexpr std::size_t kKept = std::size_t{1} << 22;  // 4 MiB of text
+    if (parser.capacity() > kKept && length <= kKept) parser = newParser();
   }
 };
 
@@ -161,6 +170,7 @@ bool checkKeys(dom::element value, const std::string& value_path, std::size_t de
 JsonRead readJson(std::string_view text) {
   JsonRead r;
   ThreadState& state = threadState();
+  state.fitTo(text.size());
   dom::parser& parser = state.parser;
   // simdjson needs its input padded: parse() copies it into the parser's own padded buffer
   // (kept between calls). An empty view may have no data at all.
