@@ -6,7 +6,6 @@
 #include <benchmark/benchmark.h>
 
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -35,16 +34,6 @@ void BM_Parse(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Parse);
-
-// The JSON library's share of parsing: the document alone, no spec checks.
-void BM_ParseJsonOnly(benchmark::State& state) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto j = nlohmann::ordered_json::parse(lines()[i++ % lines().size()]);
-    benchmark::DoNotOptimize(j);
-  }
-}
-BENCHMARK(BM_ParseJsonOnly);
 
 std::vector<relpos::Problem> problems() {
   std::vector<relpos::Problem> v;
