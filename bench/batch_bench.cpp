@@ -6,7 +6,6 @@
 #include <benchmark/benchmark.h>
 
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -35,16 +34,6 @@ void BM_Parse(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Parse);
-
-// The JSON library's share of parsing: the document alone, no spec checks.
-void BM_ParseJsonOnly(benchmark::State& state) {
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto j = nlohmann::ordered_json::parse(lines()[i++ % lines().size()]);
-    benchmark::DoNotOptimize(j);
-  }
-}
-BENCHMARK(BM_ParseJsonOnly);
 
 std::vector<relpos::Problem> problems() {
   std::vector<relpos::Problem> v;
@@ -98,6 +87,21 @@ BENCHMARK_CAPTURE(BM_NearestByKind, cylinder, std::string("cylinder-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, cup, std::string("cup-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, tray, std::string("tray-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, weld, std::string("weld-seam"));
+
+// Writing the result line alone (no parse, no solve): the problems are solved once up front.
+void BM_Write(benchmark::State& state) {
+  const auto ps = problems();
+  std::vector<relpos::Solution> sols;
+  for (const auto& p : ps) sols.push_back(relpos::solve(p, relpos::builtinRegistry()));
+  std::string out;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % ps.size();
+    relpos::writeResultLine(ps[k], sols[k], relpos::ResultOptions(), out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_Write);
 
 void BM_WholeLine(benchmark::State& state) {
   relpos::Workspace ws;

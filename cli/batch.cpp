@@ -113,17 +113,8 @@ std::string joined(const std::string& source, const std::vector<Diagnostic>& pro
 }
 
 // An invalid spec's "name" when it has a readable one, else the file's stem or "STEM:LINE".
-std::string specName(const Input& input, const Item& item) {
-  std::string text(item.text);
-  if (!item.file.empty()) {
-    std::ifstream in(item.file, std::ios::binary);
-    text = readAll(in);
-  }
-  const auto j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_object() && j.contains("name") && j["name"].is_string())
-    return j["name"].get<std::string>();
-  return input.defaultName(item);
-}
+// (The parse has it already: the text is not read a second time.)
+const std::string& specName(const ParseResult& parsed) { return parsed.name; }
 
 // The worker's reusable state: the solver's workspace and solution, and the line being written
 // (a buffer that has grown to a line's size once).
@@ -150,7 +141,7 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
     parsed = parseSpec(state.text, reg, input.defaultName(item));
   }
   if (!parsed.problem) {
-    out.name = specName(input, item);
+    out.name = specName(parsed);
     out.status = "invalid";
     state.line = statusLine(out.name, "invalid", joined(input.source(item), parsed.errors));
   } else {

@@ -274,16 +274,20 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   else if (batch && fs::is_regular_file(a.positional[0])) {
     // A JSONL file: each line's list, relative to the file's folder. One search of the whole
     // text first: most batches name no plugin, and then no line needs looking at.
+    // The lines are views into the mapped text (as the batch reads them), numbered alike.
     const FileText text(a.positional[0]);
     const std::string dir = fs::path(a.positional[0]).parent_path().string();
-    std::istringstream lines(relpos::mentionsPlugins(text.view()) ? std::string(text.view())
-                                                                  : std::string());
-    std::string line;
-    for (int n = 1; std::getline(lines, line); ++n) {
-      const auto paths = relpos::specPluginPathsInText(line, dir);
-      for (std::size_t i = 0; i < paths.size(); ++i)
-        items.push_back({paths[i], a.positional[0] + ":" + std::to_string(n) + ": plugins[" +
-                                       std::to_string(i) + "]: "});
+    const std::string_view all =
+        relpos::mentionsPlugins(text.view()) ? text.view() : std::string_view();
+    std::size_t n = 0;
+    for (std::size_t at = 0; at < all.size(); ++n) {
+      const std::size_t end = std::min(all.find('\n', at), all.size());
+      const auto paths = relpos::specPluginPathsInText(all.substr(at, end - at), dir);
+      for (std::size_t i = 0; i < paths.size(); ++i)  // "FILE:LINE: plugins[i]: ", one line
+        items.push_back(
+            {paths[i], relpos::formatDiagnostic(a.positional[0] + ":" + std::to_string(n + 1),
+                                                {"plugins[" + std::to_string(i) + "]", ""})});
+      at = end + 1;
     }
   }
   for (const auto& spec : specs) {

@@ -1,7 +1,8 @@
 // The result document (SPEC.md §2), written straight to text: a batch writes one per spec, and
-// building a JSON tree only to print it cost more than solving and parsing together. The text is
-// what nlohmann's dump() prints for the same document (same field order, number format and
-// escaping; result_line_test checks it byte for byte), so resultToJson is simply its parse.
+// building a JSON tree only to print it cost more than solving and parsing together. Numbers are
+// the shortest text that reads back as the same double (std::to_chars); strings are escaped as
+// JSON needs and always valid UTF-8. resultToJson is simply the parse of this text
+// (result_line_test checks both: every number read back, and the document).
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -14,6 +15,7 @@
 
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
+#include "utf8.hpp"
 
 namespace relpos {
 namespace {
@@ -48,12 +50,19 @@ class Writer {
     put(k, N - 1);
     put("\":", 2);
   }
-  // nlohmann's float format (shortest round-trip digits); non-finite values are null.
+  // The shortest text that reads back as exactly v (std::to_chars), with ".0" when it would look
+  // like an integer: every reader then takes it as a double (nlohmann keeps it a float, simdjson
+  // does not refuse 21 digits as too wide an integer, -0.0 keeps its sign). Non-finite: null.
   void number(double v) {
     if (!std::isfinite(v)) return raw("null");
-    room(32);  // nlohmann's to_chars writes at most 24 characters for a double
-    char* first = &out_[n_];
-    n_ += static_cast<std::size_t>(nlohmann::detail::to_chars(first, first + 32, v) - first);
+    room(32);  // at most 24 characters ("-2.2250738585072014e-308"), and ".0"
+    char* const first = &out_[n_];
+    char* last = std::to_chars(first, first + 30, v).ptr;
+    if (std::find_if(first, last, [](char c) { return c == '.' || c == 'e'; }) == last) {
+      *last++ = '.';
+      *last++ = '0';
+    }
+    n_ += static_cast<std::size_t>(last - first);
   }
   void integer(long v) {
     room(24);
@@ -94,8 +103,17 @@ class Writer {
             char esc[8];
             std::snprintf(esc, sizeof esc, "\\u%04x", c);
             put(esc, 6);
-          } else {
+          } else if (c < 0x80) {
             put(static_cast<char>(c));
+          } else {
+            // A name may come from a file name that is not UTF-8: each ill-formed part becomes
+            // U+FFFD, so the line stays valid JSON text.
+            const detail::Utf8Step step = detail::utf8Step(std::string_view(s + i, n - i));
+            if (step.valid)
+              put(s + i, step.length);
+            else
+              put("\xEF\xBF\xBD", 3);
+            i += step.length - 1;
           }
       }
     }

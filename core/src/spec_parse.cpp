@@ -1,203 +1,251 @@
 // Spec parsing (SPEC.md §1). Collects every problem it finds rather than stopping at the first,
-// so a user fixes a spec in one round.
+// so a user fixes a spec in one round. The text is read by simdjson (json_read.hpp); the checks
+// here walk its document.
 #include <string.h>  // memmem (glibc)
 
+#include <algorithm>
+#include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <set>
 #include <sstream>
 #include <string_view>
 
-#include "fast_json.hpp"
+#include "json_read.hpp"
 #include "relpos/core/spec_io.hpp"
+#include "spec_document.hpp"
+#include "utf8.hpp"
 
 namespace relpos {
 namespace {
 
-// ordered_json keeps the spec's own order of features (messages list them as the user wrote them).
-using json = nlohmann::ordered_json;
+namespace dom = simdjson::dom;
+using detail::FeatureNames;
+using detail::Json;
+using detail::Path;
 
-// A JSON path ("constraints[2].fixed"), spelled out only when a message needs it: each level
-// holds its parent and its key or index, so descending into a valid spec builds no strings.
-class Path {
- public:
-  Path(const char* root_key) : key_(root_key) {}  // NOLINT: "" is the document itself
-  Path(const Path& parent, std::string_view key) : parent_(&parent), key_(key) {}
-  Path(const Path& parent, std::size_t index) : parent_(&parent), index_(index), indexed_(true) {}
-  std::string str() const {
-    std::string s = parent_ != nullptr ? parent_->str() : std::string();
-    if (indexed_) return s + "[" + std::to_string(index_) + "]";
-    if (!s.empty()) s += '.';
-    return s.append(key_);
-  }
+// A unit vector along v (not zero), without overflow or underflow: v is first scaled by its
+// largest component, so the squares summed lie in [1, 3] whatever v's magnitude (1e200 or 1e-300).
+template <int N>
+Eigen::Matrix<double, N, 1> unitAlong(const Eigen::Matrix<double, N, 1>& v) {
+  const Eigen::Matrix<double, N, 1> s = v / v.cwiseAbs().maxCoeff();
+  return s / s.norm();
+}
 
- private:
-  const Path* parent_ = nullptr;
-  std::string_view key_;
-  std::size_t index_ = 0;
-  bool indexed_ = false;
-};
-
-// The checks, over either document type: nlohmann's, or FastJson's for the common case.
-template <typename Json>
 class Parser {
  public:
-  using json = Json;
-
   Parser(const Registry& reg, ParseResult& out) : reg_(reg), out_(out) {}
 
-  void error(const Path& path, const std::string& msg) { out_.errors.push_back({path.str(), msg}); }
+  // Every message is on one line: echoed names, ids and keys are escaped here.
+  void error(const Path& path, const std::string& msg) {
+    out_.errors.push_back({detail::escapeForMessage(path.str()), detail::escapeForMessage(msg)});
+  }
   void warn(const Path& path, const std::string& msg) {
-    out_.warnings.push_back({path.str(), msg});
+    out_.warnings.push_back({detail::escapeForMessage(path.str()), detail::escapeForMessage(msg)});
   }
 
-  void unknownFields(const json& obj, const Path& path,
-                     std::initializer_list<std::string_view> known) {
-    if (!obj.is_object()) return;
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
+  // The members of an object the checks know, found in one pass over it that also warns about
+  // the others: result[k] is the member named known[k], or nothing. (One pass, then O(1)
+  // access: looking each key up would scan the members again for every key.) A key seen twice
+  // is only noted here (see keysChecked).
+  template <std::size_t N>
+  std::array<Json, N> fields(const Json& obj, const Path& path,
+                             const std::array<std::string_view, N>& known) {
+    std::array<Json, N> found;
+    if (!obj.is_object()) return found;
+    std::vector<std::string_view> unknown;  // (allocates only when there are some)
+    for (auto it = obj.object().begin(); it != obj.object().end(); ++it) {
       const std::string_view key = it.key();
-      bool ok = false;
-      for (std::string_view k : known) ok = ok || key == k;
-      if (!ok) warn(Path(path, key), "unknown field (ignored)");
+      std::size_t k = 0;
+      while (k < N && known[k] != key) ++k;
+      if (k < N) {
+        if (found[k].present())
+          saw_duplicate_ = true;  // the first one counts
+        else
+          found[k] = Json(it.value());
+        continue;
+      }
+      const Path field(path, key);
+      warn(field, "unknown field (ignored)");
+      unknown.push_back(key);
+      const Json value(it.value());
+      if (value.is_object() || value.is_array())
+        unvisited_.push_back({value, field.str(), field.depth()});
     }
+    if (unknown.size() > 1) {
+      std::sort(unknown.begin(), unknown.end());
+      saw_duplicate_ =
+          saw_duplicate_ || std::adjacent_find(unknown.begin(), unknown.end()) != unknown.end();
+    }
+    return found;
   }
 
-  // A finite number (the check alone: callers build the path only for the message).
-  static bool finiteNumber(const json& j, double* v) {
+  // Duplicate keys and nesting beyond the reader's limit, in what `fields` did not see: the
+  // values of unknown fields. Everything else of a spec without errors went through `fields`,
+  // the feature loop or a one-member feature object, so a duplicate there has been noted; when
+  // there are errors (or a noted duplicate), the checks may have stopped short of some value,
+  // and the whole document is walked instead. False when the document is too deep.
+  bool keysChecked(const Json& root) {
+    if (!out_.errors.empty() || saw_duplicate_)
+      return detail::checkKeys(root.element(), "", 0, &out_.errors);
+    for (const Unvisited& u : unvisited_)
+      if (!detail::checkKeys(u.value.element(), u.path, u.depth, &out_.errors)) return false;
+    return true;
+  }
+
+  // A finite number (the check alone: callers build the path only for the message). The reader
+  // refuses numbers beyond a double's range, so a number is always finite; the check stays.
+  static bool finiteNumber(const Json& j, double* v) {
     if (!j.is_number()) return false;
-    *v = j.template get<double>();
+    *v = j.number();
     return std::isfinite(*v);
   }
 
-  bool number(const json& j, const Path& path, double* v) {
+  bool number(const Json& j, const Path& path, double* v) {
     if (finiteNumber(j, v)) return true;
     error(path, j.is_number() ? std::string("not a finite number")
                               : std::string("expected a number, got ") + j.type_name());
     return false;
   }
 
-  bool vec(const json& j, const Path& path, int n, double* v) {
-    if (!j.is_array() || static_cast<int>(j.size()) != n) {
+  bool vec(const Json& j, const Path& path, int n, double* v) {
+    if (!j.is_array() || j.size() != static_cast<std::size_t>(n)) {
       error(path, "expected an array of " + std::to_string(n) + " numbers");
       return false;
     }
     bool ok = true;
-    for (int i = 0; i < n; ++i)
-      if (!finiteNumber(j[i], &v[i]))
-        ok = number(j[i], Path(path, static_cast<std::size_t>(i)), &v[i]) && ok;
+    std::size_t i = 0;
+    for (dom::element e : j.array()) {
+      const Json x(e);
+      if (!finiteNumber(x, &v[i])) ok = number(x, Path(path, i), &v[i]) && ok;
+      ++i;
+    }
     return ok;
   }
 
-  bool vec3(const json& j, const Path& path, Vector3d* v) {
+  bool vec3(const Json& j, const Path& path, Vector3d* v) {
     double a[3];
     if (!vec(j, path, 3, a)) return false;
     *v = Vector3d(a[0], a[1], a[2]);
     return true;
   }
 
-  bool direction(const json& parent, const Path& path, const char* key, Vector3d* v) {
-    if (!parent.contains(key)) {
-      error(Path(path, key), "missing");
+  // A direction is a direction whatever its length (1e-13 or 1e200): only [0, 0, 0] has none.
+  bool direction(const Json& d, const Path& path, Vector3d* v) {
+    if (!d.present()) {
+      error(path, "missing");
       return false;
     }
-    if (!vec3(parent[key], Path(path, key), v)) return false;
-    if (v->norm() < 1e-12) {
-      error(Path(path, key), "zero-length direction");
+    if (!vec3(d, path, v)) return false;
+    if (v->isZero(0.0)) {
+      error(path, "zero-length direction");
       return false;
     }
-    v->normalize();
+    *v = unitAlong(*v);
     return true;
   }
 
-  bool point(const json& parent, const Path& path, const char* key, Vector3d* v) {
-    if (!parent.contains(key)) {
-      error(Path(path, key), "missing");
+  bool point(const Json& p, const Path& path, Vector3d* v) {
+    if (!p.present()) {
+      error(path, "missing");
       return false;
     }
-    return vec3(parent[key], Path(path, key), v);
+    return vec3(p, path, v);
   }
 
   double angleUnit() const { return deg_ ? kPi / 180.0 : 1.0; }
 
-  void units(const json& j) {
+  void units(const Json& j) {
     if (!j.is_object()) return error("units", "expected an object");
-    unknownFields(j, "units", {"length", "angle"});
-    if (j.contains("length") && !j["length"].is_string())
-      error("units.length", "expected a string");
-    if (j.contains("angle")) {
-      const json& a = j["angle"];
+    enum { kLength, kAngle };
+    const auto f = fields<2>(j, "units", {"length", "angle"});
+    if (f[kLength].present() && !f[kLength].is_string()) error("units.length", "expected a string");
+    const Json& a = f[kAngle];
+    if (a.present()) {
       if (a == "deg")
         deg_ = true;
-      else if (a != "rad")
+      else if (!(a == "rad"))
         error("units.angle", "expected \"rad\" or \"deg\"");
     }
   }
 
-  bool pose(const json& j, const Path& path, Isometry3d* X) {
+  bool matrixPose(const Json& m, const Path& mp, Isometry3d* X) {
+    if (!m.is_array() || m.size() != 4) {
+      error(mp, "expected 4 rows of 4 numbers");
+      return false;
+    }
+    Eigen::Matrix4d M;
+    std::size_t r = 0;
+    for (dom::element row_element : m.array()) {
+      double row[4];
+      if (!vec(Json(row_element), Path(mp, r), 4, row)) return false;
+      for (int c = 0; c < 4; ++c) M(static_cast<Eigen::Index>(r), c) = row[c];
+      ++r;
+    }
+    const Matrix3d R = M.topLeftCorner<3, 3>();
+    // A rotation's entries lie in [-1, 1]: checking that first keeps R^T R from overflowing.
+    const bool rigid = R.cwiseAbs().maxCoeff() <= 1.0 + 1e-6 &&
+                       (R.transpose() * R - Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
+                       std::abs(R.determinant() - 1.0) < 1e-6 &&
+                       (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() < 1e-12;
+    if (!rigid) {
+      error(mp,
+            "not a rigid transform (rotation must be orthonormal with determinant +1, "
+            "last row [0, 0, 0, 1])");
+      return false;
+    }
+    // Re-orthonormalise so later maths sees an exact rotation.
+    X->linear() = Quaterniond(R).normalized().toRotationMatrix();
+    X->translation() = M.topRightCorner<3, 1>();
+    return true;
+  }
+
+  bool pose(const Json& j, const Path& path, Isometry3d* X) {
     *X = Isometry3d::Identity();
     if (!j.is_object()) {
       error(path, "expected a pose object");
       return false;
     }
-    unknownFields(j, path, {"position", "orientation", "rpy", "matrix"});
-    bool ok = true;
-    if (j.contains("matrix")) {
-      if (j.contains("position") || j.contains("orientation") || j.contains("rpy")) {
+    enum { kPosition, kOrientation, kRpy, kMatrix };
+    const auto f = fields<4>(j, path, {"position", "orientation", "rpy", "matrix"});
+    const Json &position = f[kPosition], &orientation = f[kOrientation], &rpy = f[kRpy],
+               &matrix = f[kMatrix];
+    if (matrix.present()) {
+      if (position.present() || orientation.present() || rpy.present()) {
         error(path, "give either \"matrix\" or \"position\"/\"orientation\"/\"rpy\", not both");
         return false;
       }
-      const json& m = j["matrix"];
-      const Path mp(path, "matrix");
-      if (!m.is_array() || m.size() != 4) {
-        error(mp, "expected 4 rows of 4 numbers");
-        return false;
-      }
-      Eigen::Matrix4d M;
-      for (int r = 0; r < 4; ++r) {
-        double row[4];
-        if (!vec(m[r], Path(mp, static_cast<std::size_t>(r)), 4, row)) return false;
-        for (int c = 0; c < 4; ++c) M(r, c) = row[c];
-      }
-      Matrix3d R = M.topLeftCorner<3, 3>();
-      bool rigid = (R.transpose() * R - Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
-                   std::abs(R.determinant() - 1.0) < 1e-6 &&
-                   (M.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() < 1e-12;
-      if (!rigid) {
-        error(mp,
-              "not a rigid transform (rotation must be orthonormal with determinant +1, "
-              "last row [0, 0, 0, 1])");
-        return false;
-      }
-      // Re-orthonormalise so later maths sees an exact rotation.
-      X->linear() = Quaterniond(R).normalized().toRotationMatrix();
-      X->translation() = M.topRightCorner<3, 1>();
-      return true;
+      return matrixPose(matrix, Path(path, "matrix"), X);
     }
-    if (j.contains("position")) {
+    bool ok = true;
+    if (position.present()) {
       Vector3d p;
-      if (vec3(j["position"], Path(path, "position"), &p))
+      if (vec3(position, Path(path, "position"), &p))
         X->translation() = p;
       else
         ok = false;
     }
-    if (j.contains("orientation") && j.contains("rpy")) {
+    if (orientation.present() && rpy.present()) {
       error(path, "give either \"orientation\" or \"rpy\", not both");
       return false;
     }
-    if (j.contains("orientation")) {
+    if (orientation.present()) {
       double q[4];
-      if (!vec(j["orientation"], Path(path, "orientation"), 4, q)) return false;
-      Quaterniond quat(q[3], q[0], q[1], q[2]);
-      if (quat.norm() < 1e-12) {
+      if (!vec(orientation, Path(path, "orientation"), 4, q)) return false;
+      // Like a direction: any length but zero (normalised without overflow).
+      const Eigen::Vector4d xyzw(q[0], q[1], q[2], q[3]);
+      if (xyzw.isZero(0.0)) {
         error(Path(path, "orientation"), "zero quaternion");
         return false;
       }
-      X->linear() = quat.normalized().toRotationMatrix();
+      const Eigen::Vector4d u = unitAlong(xyzw);
+      X->linear() = Quaterniond(u[3], u[0], u[1], u[2]).toRotationMatrix();
     }
-    if (j.contains("rpy")) {
+    if (rpy.present()) {
       double r[3];
-      if (!vec(j["rpy"], Path(path, "rpy"), 3, r)) return false;
+      if (!vec(rpy, Path(path, "rpy"), 3, r)) return false;
       const double k = angleUnit();
       X->linear() = (Eigen::AngleAxisd(r[2] * k, Vector3d::UnitZ()) *
                      Eigen::AngleAxisd(r[1] * k, Vector3d::UnitY()) *
@@ -207,15 +255,16 @@ class Parser {
     return ok;
   }
 
-  bool feature(const json& j, const Path& path, Feature* f) {
+  bool feature(const Json& j, const Path& path, Feature* f) {
     if (!j.is_object() || j.size() != 1) {
       error(path,
             "expected an object with exactly one of \"point\", \"line\", \"plane\", "
             "\"cylinder\"");
       return false;
     }
-    const std::string kind(j.begin().key());
-    const json& b = j.begin().value();
+    const auto member = j.object().begin();
+    const std::string_view kind = member.key();
+    const Json b(member.value());
     const Path bp(path, kind);
     Vector3d p, d;
     if (kind == "point") {
@@ -224,26 +273,32 @@ class Parser {
       return true;
     }
     if (kind != "line" && kind != "plane" && kind != "cylinder") {
-      error(bp, "unknown feature kind '" + kind + "' (expected point, line, plane or cylinder)");
+      error(bp, "unknown feature kind '" + std::string(kind) +
+                    "' (expected point, line, plane or cylinder)");
       return false;
     }
     if (!b.is_object()) {
       error(bp, "expected an object");
       return false;
     }
-    const char* dir_key = kind == "plane" ? "normal" : "direction";
-    if (kind == "cylinder")
-      unknownFields(b, bp, {"point", "direction", "radius"});
-    else
-      unknownFields(b, bp, {"point", dir_key});
-    bool ok = point(b, bp, "point", &p);
-    ok = direction(b, bp, dir_key, &d) && ok;
+    const std::string_view dir_key = kind == "plane" ? "normal" : "direction";
+    enum { kPoint, kDirection, kRadius };
+    std::array<Json, 3> fb;
+    if (kind == "cylinder") {
+      fb = fields<3>(b, bp, {"point", "direction", "radius"});
+    } else {
+      const auto two = fields<2>(b, bp, {"point", dir_key});
+      fb[kPoint] = two[kPoint], fb[kDirection] = two[kDirection];
+    }
+    bool ok = point(fb[kPoint], Path(bp, "point"), &p);
+    ok = direction(fb[kDirection], Path(bp, dir_key), &d) && ok;
     if (kind == "cylinder") {
       double r = 0;
-      if (!b.contains("radius")) {
+      const Json& radius = fb[kRadius];
+      if (!radius.present()) {
         error(Path(bp, "radius"), "missing");
         ok = false;
-      } else if (number(b["radius"], Path(bp, "radius"), &r) && r <= 0) {
+      } else if (number(radius, Path(bp, "radius"), &r) && r <= 0) {
         error(Path(bp, "radius"), "radius must be positive");
         ok = false;
       }
@@ -254,104 +309,155 @@ class Parser {
     return ok;
   }
 
-  void object(const json& j, const Path& path, ObjectSpec* o, bool features_required) {
+  // `names` (when given) receives the features' names, for resolve().
+  void object(const Json& j, const Path& path, ObjectSpec* o, bool features_required,
+              FeatureNames* names) {
     if (!j.is_object()) return error(path, "expected an object");
-    unknownFields(j, path, {"name", "pose", "features", "mesh"});
+    enum { kName, kPose, kFeatures, kMesh };
+    const auto f = fields<4>(j, path, {"name", "pose", "features", "mesh"});
     o->name = path.str();
-    if (j.contains("name")) {
-      if (j["name"].is_string())
-        o->name = j["name"].template get<std::string>();
+    const Json& name = f[kName];
+    if (name.present()) {
+      if (name.is_string())
+        o->name = std::string(name.string());
       else
         error(Path(path, "name"), "expected a string");
     }
-    if (j.contains("pose")) pose(j["pose"], Path(path, "pose"), &o->pose);
-    if (j.contains("mesh")) {
-      if (j["mesh"].is_string())
-        o->mesh = j["mesh"].template get<std::string>();
+    if (f[kPose].present()) pose(f[kPose], Path(path, "pose"), &o->pose);
+    const Json& mesh = f[kMesh];
+    if (mesh.present()) {
+      if (mesh.is_string())
+        o->mesh = std::string(mesh.string());
       else
         error(Path(path, "mesh"), "expected a file name");
     }
-    if (!j.contains("features")) {
+    const Json& fs = f[kFeatures];
+    if (!fs.present()) {
       if (features_required) error(Path(path, "features"), "missing");
       return;
     }
-    const json& fs = j["features"];
     if (!fs.is_object()) return error(Path(path, "features"), "expected an object");
+    const Path features_path(path, "features");
+    FeatureNames local;
+    FeatureNames& index = names != nullptr ? *names : local;
     o->features.reserve(fs.size());
-    for (auto it = fs.begin(); it != fs.end(); ++it) {
-      Feature f;
-      if (feature(it.value(), Path(Path(path, "features"), it.key()), &f))
-        o->features.push_back({std::string(it.key()), f});
+    for (auto it = fs.object().begin(); it != fs.object().end(); ++it) {
+      Feature feat;
+      // A name twice is a duplicate key (reported by keysChecked); the first one counts.
+      if (!feature(Json(it.value()), Path(features_path, it.key()), &feat)) continue;
+      if (index.add(it.key(), o->features.size()))
+        o->features.push_back({std::string(it.key()), feat});
+      else
+        saw_duplicate_ = true;
+    }
+    // "c.axis" names the axis of a cylinder "c": a feature of that name beside it is ambiguous.
+    static constexpr std::string_view kAxis = ".axis";
+    for (const NamedFeature& nf : o->features) {
+      const std::string_view n = nf.name;
+      if (n.size() <= kAxis.size() || n.substr(n.size() - kAxis.size()) != kAxis) continue;
+      const std::size_t* base = index.find(n.substr(0, n.size() - kAxis.size()));
+      if (base != nullptr && o->features[*base].feature.kind == FeatureKind::kCylinder)
+        error(Path(features_path, n), "ambiguous name: '" + nf.name +
+                                          "' is also the axis of the cylinder '" +
+                                          o->features[*base].name + "'");
     }
   }
 
   // Resolves a feature name, including "name.axis" for a cylinder's axis.
-  bool resolve(const json& j, const Path& path, const ObjectSpec& o, const char* role,
-               std::string* name, Feature* f) {
+  bool resolve(const Json& j, const Path& path, const ObjectSpec& o, const FeatureNames& names,
+               const char* role, std::string* name, Feature* f) {
     if (!j.is_string()) {
       error(path, "expected a feature name");
       return false;
     }
-    *name = j.template get<std::string>();
-    if (const Feature* x = o.find(*name)) {
-      *f = *x;
+    const std::string_view wanted = j.string();
+    *name = std::string(wanted);
+    if (const std::size_t* x = names.find(wanted)) {
+      *f = o.features[*x].feature;
       return true;
     }
-    const std::string suffix = ".axis";
-    if (name->size() > suffix.size() &&
-        name->compare(name->size() - suffix.size(), suffix.size(), suffix) == 0) {
-      const std::string base = name->substr(0, name->size() - suffix.size());
-      if (const Feature* x = o.find(base)) {
-        if (x->kind == FeatureKind::kCylinder) {
-          *f = x->axis();
+    static constexpr std::string_view kAxis = ".axis";
+    if (wanted.size() > kAxis.size() && wanted.substr(wanted.size() - kAxis.size()) == kAxis) {
+      const std::string_view base = wanted.substr(0, wanted.size() - kAxis.size());
+      if (const std::size_t* x = names.find(base)) {
+        const Feature& b = o.features[*x].feature;
+        if (b.kind == FeatureKind::kCylinder) {
+          *f = b.axis();
           return true;
         }
-        error(path, "'" + base + "' is a " + toString(x->kind) + ", only a cylinder has an axis");
+        error(path, "'" + std::string(base) + "' is a " + toString(b.kind) +
+                        ", only a cylinder has an axis");
         return false;
       }
     }
-    std::string have;
-    for (const auto& nf : o.features) have += (have.empty() ? "" : ", ") + nf.name;
     error(path, "no feature '" + *name + "' on " + role + " object '" + o.name +
-                    "' (it has: " + (have.empty() ? "no features" : have) + ")");
+                    "' (it has: " + featureList(o) + ")");
     return false;
   }
 
+  // The names of an object's features for a message: the first kListed, then how many more.
+  static std::string featureList(const ObjectSpec& o) {
+    constexpr std::size_t kListed = 20;
+    if (o.features.empty()) return "no features";
+    std::string have;
+    for (std::size_t i = 0; i < o.features.size() && i < kListed; ++i)
+      have += (i == 0 ? "" : ", ") + o.features[i].name;
+    if (o.features.size() > kListed)
+      have += " and " + std::to_string(o.features.size() - kListed) + " more";
+    return have;
+  }
+
   // Parses one constraint; its problems mention the user's "id" when it has one.
-  void constraint(const json& j, const Path& path, const Problem& pb, InputConstraint* c,
+  void constraint(const Json& j, const Path& path, const Problem& pb, InputConstraint* c,
                   bool* ok_out) {
     const std::size_t first_error = out_.errors.size();
     constraintFields(j, path, pb, c, ok_out);
     if (!c->id.empty())
       for (std::size_t i = first_error; i < out_.errors.size(); ++i)
-        out_.errors[i].message += " (constraint id '" + c->id + "')";
+        out_.errors[i].message += " (constraint id '" + detail::escapeForMessage(c->id) + "')";
   }
 
-  void constraintFields(const json& j, const Path& path, const Problem& pb, InputConstraint* c,
+  // A constraint type's own value check (plugin code: an exception is a problem of this spec).
+  void typeCheck(const ConstraintType& type, const InputConstraint& c,
+                 std::vector<std::string>& problems) {
+    try {
+      type.check(c, problems);
+    } catch (const std::exception& e) {
+      problems.push_back(std::string("the check of constraint type '") + type.name +
+                         "' failed: " + e.what());
+    } catch (...) {
+      problems.push_back("the check of constraint type '" + type.name + "' failed");
+    }
+  }
+
+  void constraintFields(const Json& j, const Path& path, const Problem& pb, InputConstraint* c,
                         bool* ok_out) {
     *ok_out = false;
     if (!j.is_object()) return error(path, "expected an object");
-    unknownFields(
+    enum { kType, kFixed, kMobile, kValue, kMin, kMax, kOrientation, kParallel, kId };
+    const auto f = fields<9>(
         j, path,
         {"type", "fixed", "mobile", "value", "min", "max", "orientation", "parallel", "id"});
     bool ok = true;
-    if (j.contains("id")) {
-      if (j["id"].is_string()) {
-        c->id = j["id"].template get<std::string>();
+    const Json& id = f[kId];
+    if (id.present()) {
+      if (id.is_string()) {
+        c->id = std::string(id.string());
       } else {
         error(Path(path, "id"), "expected a string");
         ok = false;
       }
     }
     const ConstraintType* type = nullptr;
-    if (!j.contains("type")) {
+    const Json& type_json = f[kType];
+    if (!type_json.present()) {
       error(Path(path, "type"), "missing");
       ok = false;
-    } else if (!j["type"].is_string()) {
+    } else if (!type_json.is_string()) {
       error(Path(path, "type"), "expected a string");
       ok = false;
     } else {
-      c->type = j["type"].template get<std::string>();
+      c->type = std::string(type_json.string());
       type = reg_.constraintType(c->type);
       if (!type) {
         error(Path(path, "type"),
@@ -359,16 +465,19 @@ class Parser {
         ok = false;
       }
     }
-    for (const char* role : {"fixed", "mobile"}) {
-      if (!j.contains(role)) {
-        error(Path(path, role), "missing");
-        ok = false;
-      }
+    const Json &fixed = f[kFixed], &mobile = f[kMobile];
+    if (!fixed.present()) {
+      error(Path(path, "fixed"), "missing");
+      ok = false;
     }
-    bool have_f = j.contains("fixed") && resolve(j["fixed"], Path(path, "fixed"), pb.fixed, "fixed",
-                                                 &c->fixed_name, &c->fixed);
-    bool have_m = j.contains("mobile") && resolve(j["mobile"], Path(path, "mobile"), pb.mobile,
-                                                  "mobile", &c->mobile_name, &c->mobile);
+    if (!mobile.present()) {
+      error(Path(path, "mobile"), "missing");
+      ok = false;
+    }
+    bool have_f = fixed.present() && resolve(fixed, Path(path, "fixed"), pb.fixed, fixed_names_,
+                                             "fixed", &c->fixed_name, &c->fixed);
+    bool have_m = mobile.present() && resolve(mobile, Path(path, "mobile"), pb.mobile,
+                                              mobile_names_, "mobile", &c->mobile_name, &c->mobile);
     ok = ok && have_f && have_m;
     if (type && have_f && have_m && !type->accepts_pair(c->fixed.kind, c->mobile.kind)) {
       std::string acc;
@@ -384,9 +493,10 @@ class Parser {
     const bool angle_type = c->type == "angle";
     const double k = angle_type ? angleUnit() : 1.0;
     bool vals_ok = true;
-    auto num = [&](const char* key, double* v) {
-      if (!j.contains(key)) return false;
-      if (!number(j[key], Path(path, key), v)) {
+    auto num = [&](int field, const char* key, double* v) {
+      const Json& x = f[field];
+      if (!x.present()) return false;
+      if (!number(x, Path(path, key), v)) {
         vals_ok = false;
         return false;
       }
@@ -394,8 +504,8 @@ class Parser {
       return true;
     };
     double v;
-    if (num("value", &v)) c->has_value = true, c->value = c->min = c->max = v;
-    bool has_min = num("min", &c->min), has_max = num("max", &c->max);
+    if (num(kValue, "value", &v)) c->has_value = true, c->value = c->min = c->max = v;
+    bool has_min = num(kMin, "min", &c->min), has_max = num(kMax, "max", &c->max);
     if (c->has_value && (has_min || has_max)) {
       error(path, "give either \"value\" or \"min\"/\"max\", not both");
       vals_ok = false;
@@ -407,8 +517,10 @@ class Parser {
       vals_ok = false;
     }
     if (type && !type->takes_value) {
-      for (const char* key : {"value", "min", "max"})
-        if (j.contains(key)) warn(Path(path, key), "ignored: '" + c->type + "' takes no value");
+      const std::pair<int, const char*> values[] = {
+          {kValue, "value"}, {kMin, "min"}, {kMax, "max"}};
+      for (const auto& [field, key] : values)
+        if (f[field].present()) warn(Path(path, key), "ignored: '" + c->type + "' takes no value");
       c->has_value = true;
       c->value = c->min = c->max = 0.0;
     }
@@ -416,8 +528,8 @@ class Parser {
       error(path, "min " + num2s(c->min / k) + " is greater than max " + num2s(c->max / k));
       vals_ok = false;
     }
-    if (j.contains("orientation")) {
-      const json& o = j["orientation"];
+    const Json& o = f[kOrientation];
+    if (o.present()) {
       if (o == "aligned")
         c->orientation = Orientation::kAligned;
       else if (o == "opposed")
@@ -429,12 +541,13 @@ class Parser {
         vals_ok = false;
       }
     }
-    if (j.contains("parallel")) {
-      if (!j["parallel"].is_boolean()) {
+    const Json& parallel = f[kParallel];
+    if (parallel.present()) {
+      if (!parallel.is_boolean()) {
         error(Path(path, "parallel"), "expected true or false");
         vals_ok = false;
       } else {
-        c->parallel = j["parallel"].template get<bool>();
+        c->parallel = parallel.boolean();
         if (!(c->type == "distance" && c->fixed.kind == FeatureKind::kLine &&
               c->mobile.kind == FeatureKind::kLine))
           warn(Path(path, "parallel"), "only meaningful for a line-line distance (ignored)");
@@ -442,7 +555,7 @@ class Parser {
     }
     if (ok && vals_ok && type && type->check) {
       std::vector<std::string> problems;
-      type->check(*c, problems);
+      typeCheck(*type, *c, problems);
       for (const auto& p : problems) {
         // "field: message" -> path.field: message
         auto colon = p.find(": ");
@@ -462,176 +575,189 @@ class Parser {
     return os.str();
   }
 
-  void document(const json& j, const std::string& default_name) {
+  // False when the document nests too deeply to be read.
+  bool document(const Json& j) {
+    checks(j);
+    if (!keysChecked(j)) return false;
+    if (out_.errors.empty()) out_.problem = std::move(problem_);
+    return true;
+  }
+
+  void checks(const Json& j) {
     if (!j.is_object()) return error("", "the spec must be a JSON object");
-    unknownFields(
+    enum { kRelpos, kName, kUnits, kFixed, kMobile, kObstacles, kConstraints, kPlugins };
+    const auto f = fields<8>(
         j, "",
         {"relpos", "name", "units", "fixed", "mobile", "obstacles", "constraints", "plugins"});
-    if (j.contains("relpos") && j["relpos"] != 1)
+    const Json& version = f[kRelpos];
+    if (version.present() && !(version.is_number() && version.number() == 1))
       error("relpos", "unsupported format version (this relpos reads version 1)");
-    Problem pb;
-    pb.name = default_name;
-    if (j.contains("name")) {
-      if (j["name"].is_string())
-        pb.name = j["name"].template get<std::string>();
+    const Json& name = f[kName];
+    if (name.present()) {
+      if (name.is_string())
+        out_.name = std::string(name.string());
       else
         error("name", "expected a string");
     }
-    if (j.contains("units")) units(j["units"]);
-    for (const char* role : {"fixed", "mobile", "constraints"})
-      if (!j.contains(role)) error(role, "missing");
-    if (j.contains("fixed")) object(j["fixed"], "fixed", &pb.fixed, true);
-    if (j.contains("mobile")) object(j["mobile"], "mobile", &pb.mobile, true);
-    if (j.contains("obstacles")) {
-      const json& obs = j["obstacles"];
+    Problem& pb = problem_;
+    pb.name = out_.name;
+    if (f[kUnits].present()) units(f[kUnits]);
+    const Json &fixed = f[kFixed], &mobile = f[kMobile], &obstacles = f[kObstacles],
+               &plugins = f[kPlugins], &constraints = f[kConstraints];
+    if (!fixed.present()) error("fixed", "missing");
+    if (!mobile.present()) error("mobile", "missing");
+    if (!constraints.present()) error("constraints", "missing");
+    if (fixed.present()) object(fixed, "fixed", &pb.fixed, true, &fixed_names_);
+    if (mobile.present()) object(mobile, "mobile", &pb.mobile, true, &mobile_names_);
+    if (obstacles.present()) {
       const Path obstacles_path("obstacles");
-      if (!obs.is_array())
+      if (!obstacles.is_array()) {
         error("obstacles", "expected an array");
-      else
-        for (std::size_t i = 0; i < obs.size(); ++i) {
+      } else {
+        std::size_t i = 0;
+        for (dom::element e : obstacles.array()) {
           ObjectSpec o;
-          object(obs[i], Path(obstacles_path, i), &o, false);
+          object(Json(e), Path(obstacles_path, i++), &o, false, nullptr);
           pb.obstacles.push_back(o);
         }
+      }
     }
-    if (j.contains("plugins")) {  // loaded by the caller before parsing (specPluginPaths)
-      if (!j["plugins"].is_array())
+    if (plugins.present()) {  // loaded by the caller before parsing (specPluginPaths)
+      if (!plugins.is_array()) {
         error("plugins", "expected an array of plugin paths");
-      else
-        for (std::size_t i = 0; i < j["plugins"].size(); ++i)
-          if (!j["plugins"][i].is_string())
-            error(Path(Path("plugins"), i), "expected a path (string)");
+      } else {
+        const Path plugins_path("plugins");
+        std::size_t i = 0;
+        for (dom::element e : plugins.array()) {
+          if (!Json(e).is_string()) error(Path(plugins_path, i), "expected a path (string)");
+          ++i;
+        }
+      }
     }
-    if (j.contains("constraints")) {
-      const json& cs = j["constraints"];
+    if (constraints.present()) {
       const Path constraints_path("constraints");
-      if (!cs.is_array()) {
+      if (!constraints.is_array()) {
         error("constraints", "expected an array");
       } else {
-        if (cs.empty()) warn("constraints", "no constraints: every pose is a solution");
-        pb.constraints.reserve(cs.size());
+        if (constraints.size() == 0)
+          warn("constraints", "no constraints: every pose is a solution");
+        pb.constraints.reserve(constraints.size());
         std::size_t i = 0;
-        for (auto it = cs.begin(); it != cs.end(); ++it, ++i) {
+        for (dom::element e : constraints.array()) {
           InputConstraint c;
           bool ok = false;
-          constraint(*it, Path(constraints_path, i), pb, &c, &ok);
+          constraint(Json(e), Path(constraints_path, i++), pb, &c, &ok);
           if (ok) pb.constraints.push_back(std::move(c));
         }
       }
     }
-    if (out_.errors.empty()) out_.problem = std::move(pb);
   }
 
  private:
+  // A value the checks did not look into, for keysChecked.
+  struct Unvisited {
+    Json value;
+    std::string path;
+    std::size_t depth;
+  };
+
   const Registry& reg_;
   ParseResult& out_;
   bool deg_ = false;
+  FeatureNames fixed_names_, mobile_names_;
+  Problem problem_;
+  bool saw_duplicate_ = false;
+  std::vector<Unvisited> unvisited_;
 };
 
-// Line and column of a byte offset (1-based), for parse errors.
-void lineColumn(const std::string& text, std::size_t byte, std::size_t* line, std::size_t* col) {
-  *line = 1;
-  *col = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n')
-      ++*line, *col = 1;
-    else
-      ++*col;
+std::string readFile(const std::string& file, std::string* error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    *error = "cannot read the file: it is a directory";
+    return {};
   }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    *error = std::string("cannot read the file (") + std::strerror(errno) + ")";
+    return {};
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) {
+    *error = std::string("cannot read the file (") + std::strerror(errno) + ")";
+    return {};
+  }
+  return ss.str();
 }
 
 }  // namespace
 
 ParseResult parseSpec(const std::string& text, const Registry& registry,
                       const std::string& default_name) {
-  // Most specs are plain: read them without building nlohmann's document (fast_json.hpp).
-  thread_local detail::FastJson doc;
-  if (doc.parse(text)) {
-    ParseResult out;
-    Parser<detail::FastJson::Ref>(registry, out).document(doc.root(), default_name);
-    return out;
-  }
-  return detail::parseSpecWithNlohmann(text, registry, default_name);
-}
-
-namespace detail {
-
-ParseResult parseSpecWithNlohmann(const std::string& text, const Registry& registry,
-                                  const std::string& default_name) {
   ParseResult out;
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::size_t line, col;
-    lineColumn(text, e.byte > 0 ? e.byte - 1 : 0, &line, &col);
-    std::string what = e.what();
-    auto p = what.find("parse error");
-    out.errors.push_back({"", "malformed JSON at line " + std::to_string(line) + ", column " +
-                                  std::to_string(col) + ": " +
-                                  (p == std::string::npos ? what : what.substr(p))});
-    return out;
-  } catch (const json::exception& e) {  // e.g. a number too large for a double
-    std::string what = e.what();
-    auto p = what.find("] ");
-    out.errors.push_back(
-        {"", "malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2))});
-    return out;
+  out.name = detail::toValidUtf8(default_name);
+  detail::JsonRead doc = detail::readJson(text);
+  out.errors = std::move(doc.errors);
+  // (A problem only if there is no error.)
+  if (doc.root && !Parser(registry, out).document(Json(*doc.root))) {
+    ParseResult deep;  // too deep: refused as a whole, like malformed JSON
+    deep.name = std::move(out.name);
+    deep.errors = detail::tooDeep(text);
+    return deep;
   }
-  Parser<json>(registry, out).document(j, default_name);
   return out;
 }
 
-}  // namespace detail
-
 ParseResult parseSpecFile(const std::string& file, const Registry& registry) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    ParseResult out;
-    out.errors.push_back({"", "cannot read the file"});
-    return out;
-  }
-  std::stringstream ss;
-  ss << in.rdbuf();
   std::string base = file.substr(file.find_last_of('/') + 1);
   auto dot = base.rfind('.');
   if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
-  return parseSpec(ss.str(), registry, base);
+  std::string error;
+  const std::string text = readFile(file, &error);
+  if (!error.empty()) {
+    ParseResult out;
+    out.name = detail::toValidUtf8(base);
+    out.errors.push_back({"", error});
+    return out;
+  }
+  return parseSpec(text, registry, base);
 }
 
 bool mentionsPlugins(std::string_view text) {
   // glibc's memmem (vectorised two-way search): ~10 GB/s, where find() stops at every quote of
   // the document and a Horspool search reaches ~3 GB/s.
   static constexpr std::string_view key = "\"plugins\"";
+  if (text.size() < key.size()) return false;  // (an empty view may have no data at all)
   return ::memmem(text.data(), text.size(), key.data(), key.size()) != nullptr;
 }
 
-std::vector<std::string> specPluginPathsInText(const std::string& text, const std::string& dir) {
+std::vector<std::string> specPluginPathsInText(std::string_view text, const std::string& dir) {
   std::vector<std::string> out;
   if (!mentionsPlugins(text)) return out;  // most specs: no need to parse
-  const json j = json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains("plugins") || !j["plugins"].is_array())
-    return out;
+  const detail::JsonRead doc = detail::readJson(text);
+  if (!doc.root) return out;  // parseSpec reports why
+  const Json plugins = Json(*doc.root)["plugins"];
+  if (!plugins.is_array()) return out;
   const std::string prefix = dir.empty() || dir.back() == '/' ? dir : dir + "/";
-  for (const auto& p : j["plugins"])
-    if (p.is_string()) {
-      const std::string path = p.get<std::string>();
-      out.push_back(!path.empty() && path[0] == '/' ? path : prefix + path);
-    }
+  for (dom::element e : plugins.array()) {
+    const Json p(e);
+    if (!p.is_string()) continue;
+    const std::string_view path = p.string();
+    out.push_back(!path.empty() && path[0] == '/' ? std::string(path) : prefix + std::string(path));
+  }
   return out;
 }
 
 std::vector<std::string> specPluginPaths(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return {};
-  std::stringstream ss;
-  ss << in.rdbuf();
+  std::string error;
+  const std::string text = readFile(file, &error);
+  if (!error.empty()) return {};
   const std::string::size_type slash = file.find_last_of('/');
-  return specPluginPathsInText(ss.str(), slash == std::string::npos ? "" : file.substr(0, slash));
+  return specPluginPathsInText(text, slash == std::string::npos ? "" : file.substr(0, slash));
 }
 
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d) {
-  return file + ": " + (d.path.empty() ? "" : d.path + ": ") + d.message;
+  return detail::escapeForMessage(file + ": " + (d.path.empty() ? "" : d.path + ": ") + d.message);
 }
 
 }  // namespace relpos

@@ -143,9 +143,56 @@ TEST(SpecParse, ZeroDirectionNanAndRadius) {
   r.replace(r.find("\"radius\": 0.5"), 13, "\"radius\": -1");
   expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", r.c_str()),
               "fixed.features.C.cylinder.radius", "positive");
-  // JSON has no NaN literal; a number too large for a double is refused, not a crash.
-  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": 1e999})"), "",
-              "number overflow");
+  // JSON has no NaN literal; a number too large for a double is refused at its path, not a crash.
+  expectError(spec(R"({"type": "distance", "fixed": "Q", "mobile": "tcp", "value": 1e999})"),
+              "constraints[0].value", "number out of the range of a double '1e999'");
+}
+
+// Directions, normals and quaternions of any magnitude are normalised without overflow or
+// underflow (their squares once overflowed beyond 1e154: directions became zero, quaternions the
+// identity); only an exact zero has no direction.
+TEST(SpecParse, DirectionsAndQuaternionsOfAnyMagnitude) {
+  auto directionOf = [](const std::string& d) {
+    std::string s = kBase;
+    s.replace(s.find("[0, 2, 0]"), 9, d);
+    const ParseResult r =
+        parse(spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})", s.c_str()));
+    EXPECT_TRUE(r.problem) << d << ": " << (r.errors.empty() ? "" : r.errors[0].message);
+    return r.problem ? r.problem->fixed.features[0].feature.direction : Vector3d::Zero().eval();
+  };
+  const Vector3d diagonal = Vector3d(1, 1, 0).normalized();
+  for (const char* d : {"[1e200, 1e200, 0]", "[1e-200, 1e-200, 0]", "[1.7e308, 1.7e308, 0]",
+                        "[5e-324, 5e-324, 0]", "[3, 3, 0]"}) {
+    const Vector3d v = directionOf(d);
+    for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(v[i], diagonal[i]) << d;
+  }
+  EXPECT_EQ(directionOf("[1e-13, 0, 0]"), Vector3d(1, 0, 0));  // once "zero-length"
+  EXPECT_EQ(directionOf("[0, -1e300, 0]"), Vector3d(0, -1, 0));
+  const Vector3d third = directionOf("[1e308, -1e308, 1e308]");
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(std::abs(third[i]), 1 / std::sqrt(3.0));
+
+  auto withPose = [](const std::string& pose) {
+    std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
+    s.insert(s.find("\"features\": {\n    \"K\""), "\"pose\": " + pose + ", ");
+    return s;
+  };
+  // A quarter turn about z, however the quaternion is scaled: x goes to y.
+  for (const char* q : {"[0, 0, 1e200, 1e200]", "[0, 0, 1e-300, 1e-300]", "[0, 0, 2, 2]"}) {
+    const ParseResult r = parse(withPose(std::string(R"({"orientation": )") + q + "}"));
+    ASSERT_TRUE(r.problem) << q;
+    EXPECT_TRUE((r.problem->fixed.pose.linear() * Vector3d::UnitX()).isApprox(Vector3d::UnitY()))
+        << q;
+  }
+  expectError(withPose(R"({"orientation": [0, 0, 0, 0]})"), "fixed.pose.orientation",
+              "zero quaternion");
+  // A matrix with huge entries is not rigid (and its check does not overflow into a pass).
+  expectError(
+      withPose(R"({"matrix": [[1e200, 0, 0, 0], [0, 1e200, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"),
+      "fixed.pose.matrix", "not a rigid transform");
+  expectError(
+      withPose(
+          R"({"matrix": [[1e300, 1e300, 0, 0], [-1e300, 1e300, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]})"),
+      "fixed.pose.matrix", "not a rigid transform");
 }
 
 TEST(SpecParse, ValueProblems) {
