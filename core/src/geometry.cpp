@@ -26,12 +26,14 @@ Matrix3d rotationBetween(const Vector3d& from, const Vector3d& to) {
 
 namespace {
 // PMF App. I: orthonormal basis {u, v_u, w} of two independent unit vectors, as matrix columns.
+// v's part across u is taken to full precision (nearly parallel vectors leave little of it), and
+// the columns are made orthonormal to rounding: a rotation built from them stays a rotation.
 Matrix3d basisOf(const Vector3d& u, const Vector3d& v) {
-  Vector3d vu = (v - u.dot(v) * u).normalized();
+  const Vector3d w = u.cross(perpendicularPart(v, u)).normalized();
   Matrix3d B;
   B.col(0) = u;
-  B.col(1) = vu;
-  B.col(2) = u.cross(vu);
+  B.col(1) = w.cross(u);
+  B.col(2) = w;
   return B;
 }
 }  // namespace

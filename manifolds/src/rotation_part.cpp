@@ -42,7 +42,8 @@ Matrix3d coneBase(const Vector3d& u_m, const Vector3d& u_f, double alpha) {
 RotationPart RotationPart::fixed(const Matrix3d& R) {
   RotationPart r;
   r.kind = RotationKind::kFixed;
-  r.R0 = R;
+  // The nearest rotation: R may come from vectors orthogonal only to the angle tolerance.
+  r.R0 = Quaterniond(R).normalized().toRotationMatrix();
   return r;
 }
 

@@ -44,13 +44,26 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
   const double p = a.value(), q = b.value();
   const double sin_theta = accurateCross(a.d, b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
-    // Parallel lines: coaxial cylinders (redundant or incompatible) or up to two lines.
-    const Vector3d w = b.q - a.q;
+    // Parallel lines: coaxial cylinders (redundant or incompatible) or up to two lines. Parallel
+    // only within the angle tolerance, their separation is read where the problem is (the
+    // origin: the solver centres the geometry), so that it changes by no more than the length
+    // tolerance over the problem's size.
+    const Vector3d x0 = projectOnLine(Vector3d::Zero(), a.q, a.d);
+    const Vector3d w = b.q - x0;
     const Vector3d w_perp = w - w.dot(a.d) * a.d;
     const double db = w_perp.norm();
     if (db <= tol.length) {
       if (tol.equalLength(p, q)) return out.fire(kSameLine).redundantSecond();
       return out.fire(kIncompatible).incompatible("one point at two distances from one line");
+    }
+    if (tol.zeroLength(p) && tol.zeroLength(q) && sin_theta > 0.0) {
+      // Apart here, they may still cross further away: then the point is there.
+      Vector3d f1, f2;
+      closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
+      if ((f2 - f1).norm() <= tol.length) {
+        if (tol.tooIllConditioned(1.0 / sin_theta)) return out.defer();
+        return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
+      }
     }
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
       return out.fire(kIncompatible).incompatible(kNoPose);
@@ -59,11 +72,11 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     const double k1 = (db * db + p * p - q * q) / (2 * db);
     const double k2sq = p * p - k1 * k1;
     out.fire(kParallelCylinders);
-    if (k2sq <= 2 * tol.length * std::max(1.0, p))
-      return one(out, onLine(a, a.q + k1 * u_b, a.d, 0));
+    // Tangent cylinders: k2 ~ sqrt(2 r δ) for a δ of the length tolerance (k2sq is a length²).
+    if (k2sq <= 2 * tol.length * std::max(p, q)) return one(out, onLine(a, x0 + k1 * u_b, a.d, 0));
     const double k2 = std::sqrt(k2sq);
-    one(out, onLine(a, a.q + k1 * u_b + k2 * v_b, a.d, 0));
-    one(out, onLine(a, a.q + k1 * u_b - k2 * v_b, a.d, 0));
+    one(out, onLine(a, x0 + k1 * u_b + k2 * v_b, a.d, 0));
+    one(out, onLine(a, x0 + k1 * u_b - k2 * v_b, a.d, 0));
     return;
   }
   Vector3d f1, f2;
@@ -95,7 +108,8 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
   const Side side = a.point_side;
   const double sin_theta = accurateCross(a.d, b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
-    const Vector3d w = b.q - a.q;
+    // (The separation read at the problem's centre, as in samePoint.)
+    const Vector3d w = b.q - projectOnLine(Vector3d::Zero(), a.q, a.d);
     const Vector3d w_perp = w - w.dot(a.d) * a.d;  // from K_b to L_b, ⊥ both
     const double db = w_perp.norm();
     const Vector3d u_b = db > tol.length ? Vector3d(w_perp / db) : anyPerpendicular(a.d);

@@ -29,8 +29,11 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
     }
     return;  // an ellipse, or a line and a plane on two points: the matcher's cases
   }
-  // K_b ∥ Π_b: h = signed height of the line over the plane.
-  const double h = (pl.q - pp.q).dot(n);
+  // K_b ∥ Π_b: h = signed height of the line over the plane, read where the problem is (the
+  // line's point nearest the origin: the solver centres the geometry), for a line parallel to
+  // the plane only within the angle tolerance.
+  const Vector3d k0 = projectOnLine(Vector3d::Zero(), pl.q, pl.d);
+  const double h = (k0 - pp.q).dot(n);
   const double db = std::abs(h);
   if (db - da > p + tol.length)
     return out.fire(kIncompatible)
@@ -38,7 +41,7 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "
             "IV "
             "Table VI, row 1)");
-  const Vector3d foot = pl.q - h * n;  // the line's shadow on the plane passes through here
+  const Vector3d foot = k0 - h * n;  // the line's shadow on the plane passes through here
   if (da <= tol.length) {
     // One point: the cylinder about K_b cuts the plane in one or two lines ∥ K_b.
     if (tol.zeroLength(p)) return out.fire(kImplied).redundantSecond();  // K_b lies in Π_b
@@ -64,7 +67,7 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   if (db > tol.length && tol.equalLength(db - da, p)) {
     // P at p from K_b toward the plane, Q right below it on the plane.
     const Vector3d u_b = -(h / db) * n;
-    const Vector3d R_b = pl.q + p * u_b;  // on the line through K_b's point, toward the plane
+    const Vector3d R_b = k0 + p * u_b;  // on the line through K_b's point, toward the plane
     return two(out.fire(kStretched), onLine(pl, R_b, pl.d, 0), onLine(pp, foot, pl.d, 0));
   }
 }

@@ -1,6 +1,7 @@
 // PMF App. IV Table VII and Fig. 3: two point-plane coincidences d(P_a, Σ_b) = 0,
 // d(Q_a, Π_b) = 0 (both points on one object, both planes on the other).
 #include <cmath>
+#include <limits>
 
 #include "relpos/rules/builtin.hpp"
 #include "rule_helpers.hpp"
@@ -25,9 +26,18 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
                onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
   }
   const Vector3d& n = a.d;
-  const double db = (b.q - a.q).dot(n);  // signed distance from Σ to Π along Σ's normal
+  // Signed distance from Σ to Π along Σ's normal, read where the problem is (Π's point nearest
+  // the origin: the solver centres the geometry), for planes parallel within the angle tolerance.
+  const Vector3d b0 = b.q.dot(b.d) * b.d;
+  const double db = (b0 - a.q).dot(n);
   if (da <= tol.length) {
     if (std::abs(db) <= tol.length) return out.fire(kSamePlane).redundantSecond();  // Fig. 3b
+    // Apart here but not exactly parallel: they meet further away (unless only by rounding).
+    if (cross.norm() > 16 * std::numeric_limits<double>::epsilon()) {
+      if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
+      return one(out.fire(kPlanesMeet),
+                 onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
+    }
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }
