@@ -1,0 +1,41 @@
+#include "failure_log.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace relpos::test {
+
+void FailureLog::add(const std::string& group, const std::string& kind, const std::string& cause,
+                     const std::string& details) {
+  ++total_;
+  const int n = ++by_kind_[{group, kind}];
+  ++by_cause_[{group, kind + ": " + cause}];
+  if (n <= shown_per_kind_)
+    ADD_FAILURE() << "[" << group << "] " << kind << " (" << cause << ")\n" << details;
+}
+
+std::string FailureLog::table(const std::string& title) const {
+  std::ostringstream os;
+  os << "==== " << title << ": " << total_ << " failures ====\n";
+  for (const auto& [group, n] : cases_) {
+    const auto u = unhandled_.find(group);
+    os << group << ": " << n << " cases, " << (u == unhandled_.end() ? 0 : u->second)
+       << " unhandled";
+    for (const auto& [key, k] : by_kind_)
+      if (key.first == group) os << ", " << k << " " << key.second;
+    os << "\n";
+    // The most frequent causes first (ties in name order), at most eight per group.
+    std::vector<std::pair<int, std::string>> causes;
+    for (const auto& [key, k] : by_cause_)
+      if (key.first == group) causes.emplace_back(-k, key.second);
+    std::sort(causes.begin(), causes.end());
+    for (std::size_t i = 0; i < causes.size() && i < 8; ++i)
+      os << "    " << -causes[i].first << " x " << causes[i].second << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace relpos::test

@@ -1,0 +1,33 @@
+#pragma once
+// Collects the failures of a property sweep by group (a transform, a degenerate family) and kind
+// (status changed, NaN, violating pose, ...): the first few of each with their reproduction
+// become gtest failures, every one is counted, and the table of counts and causes (the rules that
+// fired, the status) is printed at the end, so one run tells what breaks where and how often.
+#include <map>
+#include <string>
+#include <utility>
+
+namespace relpos::test {
+
+class FailureLog {
+ public:
+  explicit FailureLog(int shown_per_kind = 3) : shown_per_kind_(shown_per_kind) {}
+  // `cause`: what produced it (status and rules), for the table; `details`: the reproduction.
+  void add(const std::string& group, const std::string& kind, const std::string& cause,
+           const std::string& details);
+  // Cases seen per group (failing or not), and per group the ones answered `unhandled`.
+  void count(const std::string& group) { ++cases_[group]; }
+  void unhandled(const std::string& group) { ++unhandled_[group]; }
+  int total() const { return total_; }
+  // The table: per group, cases, unhandled, failures by kind, and the most frequent causes.
+  std::string table(const std::string& title) const;
+
+ private:
+  int shown_per_kind_;
+  int total_ = 0;
+  std::map<std::string, int> cases_, unhandled_;
+  std::map<std::pair<std::string, std::string>, int> by_kind_;
+  std::map<std::pair<std::string, std::string>, int> by_cause_;  // (group, kind: cause)
+};
+
+}  // namespace relpos::test
