@@ -14,6 +14,7 @@
 // the end of each test prints the counts per level and failure kind, with the rules that fired.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 
@@ -44,7 +45,11 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
       p.name = "degenerate-" + std::to_string(k);
       p = canonical(p);
       const Isometry3d& known = w.known().X_WM_star;
-      const double size = problemSize(p);
+      // The families are built at unit scale (coordinates within a few units), the degenerate
+      // pair a small gap or angle apart inside it: their size is at least 1 however close that
+      // pair is (two points 1e-12 apart are not a problem of size 1e-12 when their coordinates,
+      // and so the data's own rounding, are of size 1).
+      const double size = std::max(1.0, problemSize(p));
       const std::string spec = specJson(p);
       // The generator's promise, on the problem as read back from its spec.
       const double slack = RelativeEvaluator(p, size).worst(known);
@@ -81,15 +86,17 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
         log.add(group, "non-finite JSON", cause, r.bad_json + "\n" + details);
     }
   }
-  const std::string table = log.table(f.name);
-  std::printf("%s", table.c_str());
-  EXPECT_EQ(log.total(), 0) << "failures by kind and cause: the table above";
+  log.report(f.name);
 }
 
 class Degenerate : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(Degenerate, NeverInconsistentNaNOrViolatingAndKeepsTheKnownPose) {
-  runFamily(degenerateFamilies()[GetParam()], 9000 + GetParam());
+  // Seeded by the family's name (FNV-1a), so adding a family changes no other family's cases.
+  const DegenerateFamily& f = degenerateFamilies()[GetParam()];
+  std::uint64_t seed = 14695981039346656037ull;
+  for (unsigned char c : f.name) seed = (seed ^ c) * 1099511628211ull;
+  runFamily(f, seed);
 }
 
 std::string familyName(const ::testing::TestParamInfo<std::size_t>& info) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -11,10 +12,24 @@ namespace relpos::test {
 void FailureLog::add(const std::string& group, const std::string& kind, const std::string& cause,
                      const std::string& details) {
   ++total_;
-  const int n = ++by_kind_[{group, kind}];
+  ++by_kind_[{group, kind}];
   ++by_cause_[{group, kind + ": " + cause}];
-  if (n <= shown_per_kind_)
-    ADD_FAILURE() << "[" << group << "] " << kind << " (" << cause << ")\n" << details;
+  std::vector<std::string>& kept = shown_[{group, kind}];
+  const std::string text = "[" + group + "] " + kind + " (" + cause + ")\n" + details;
+  // Stable: among equally short ones, the first found stays.
+  kept.insert(std::upper_bound(
+                  kept.begin(), kept.end(), text,
+                  [](const std::string& a, const std::string& b) { return a.size() < b.size(); }),
+              text);
+  if (static_cast<int>(kept.size()) > shown_per_kind_) kept.pop_back();
+}
+
+void FailureLog::report(const std::string& title) const {
+  for (const auto& [key, texts] : shown_)
+    for (const std::string& t : texts) ADD_FAILURE() << t;
+  const std::string t = table(title);
+  std::printf("%s", t.c_str());
+  EXPECT_EQ(total_, 0) << "failures by kind and cause: the table above";
 }
 
 std::string FailureLog::table(const std::string& title) const {

@@ -22,14 +22,6 @@ Vector3d centroid(const ObjectSpec& o) {
   return o.features.empty() ? c : Vector3d(c / static_cast<double>(o.features.size()));
 }
 
-double spread(const ObjectSpec& o) {
-  const Vector3d c = centroid(o);
-  double s = 0.0;
-  for (const NamedFeature& f : o.features)
-    s = std::max({s, (f.feature.point - c).norm(), f.feature.radius});
-  return s;
-}
-
 Isometry3d translation(const Vector3d& t) {
   Isometry3d T = Isometry3d::Identity();
   T.translation() = t;
@@ -123,15 +115,22 @@ void checkNulls(const json& j, const std::string& path, const std::vector<std::s
 }  // namespace
 
 double problemSize(const Problem& p) {
-  double s = std::max(spread(p.fixed), spread(p.mobile));
-  for (const InputConstraint& c : p.constraints) {
-    s = std::max({s, c.fixed.radius, c.mobile.radius});
-    if (c.type == "angle") continue;
-    for (double v : {c.value, c.min, c.max})
+  // Every feature point where the spec places it: fixed ones by the fixed pose, mobile ones by
+  // the initial pose.
+  std::vector<Vector3d> points;
+  for (const NamedFeature& f : p.fixed.features) points.push_back(p.fixed.pose * f.feature.point);
+  for (const NamedFeature& f : p.mobile.features) points.push_back(p.mobile.pose * f.feature.point);
+  Vector3d c = Vector3d::Zero();
+  for (const Vector3d& q : points) c += q;
+  if (!points.empty()) c /= static_cast<double>(points.size());
+  double s = 0.0;
+  for (const Vector3d& q : points) s = std::max(s, (q - c).norm());
+  for (const InputConstraint& cn : p.constraints) {
+    s = std::max({s, cn.fixed.radius, cn.mobile.radius});
+    if (cn.type == "angle") continue;
+    for (double v : {cn.value, cn.min, cn.max})
       if (std::isfinite(v)) s = std::max(s, std::abs(v));
   }
-  if (s > 0.0) return s;
-  s = (p.fixed.pose * centroid(p.fixed) - p.mobile.pose * centroid(p.mobile)).norm();
   return s > 0.0 ? s : 1.0;
 }
 

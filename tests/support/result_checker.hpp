@@ -13,10 +13,10 @@
 
 namespace relpos::test {
 
-// The problem's own length: the spread of each object's feature points about their centroid, the
-// radii and the distance values, whichever is largest (when all are 0, as for one point on one
-// point, the distance between the objects' centroids at the initial pose; else 1). Unchanged by
-// rigid moves of the world or of either object's frame, and ×s when every length is ×s.
+// The problem's own length: the radius, about their centroid, of all its feature points where
+// the spec places them (the mobile ones at the initial pose), or the largest radius or distance
+// value if that is larger (1 when all are 0). Unchanged by rigid moves of the world or of either
+// object's frame (the initial pose moving with it), and ×s when every length is ×s.
 double problemSize(const Problem& p);
 
 // The largest violation of any input constraint at X_WM, lengths divided by `size` (angles in
