@@ -78,7 +78,7 @@ double touchSlack(double eta) { return std::max(1e-12, 2 * std::abs(eta)); }
 
 DegenerateFamily family(const std::string& name, const std::string& level_name,
                         std::vector<double> levels, std::function<double(double)> tol,
-                        std::function<void(WB&, double, int)> build, int per_level = 8,
+                        std::function<void(WB&, double, int)> build, int per_level = 16,
                         std::function<double(double)> slack = rounding) {
   DegenerateFamily f;
   f.name = name;
@@ -426,18 +426,19 @@ const std::vector<DegenerateFamily>& degenerateFamilies() {
                threePointsNearlyCollinear),
         family("point on two spheres with centres a gap apart", "gap", kGaps, byAngle,
                nearlyConcentricSpheres),
-        family("sphere touching a plane", "eta", kTouch, byTouch, sphereTouchingPlane, 8,
+        family("sphere touching a plane", "eta", kTouch, byTouch, sphereTouchingPlane, 16,
                touchSlack),
-        family("sphere touching a line", "eta", kTouch, byTouch, sphereTouchingLine, 8, touchSlack),
-        family("spheres touching outside", "eta", kTouch, byTouch, spheresTouchingOutside, 8,
+        family("sphere touching a line", "eta", kTouch, byTouch, sphereTouchingLine, 16,
                touchSlack),
-        family("spheres touching inside", "eta", kTouch, byTouch, spheresTouchingInside, 8,
+        family("spheres touching outside", "eta", kTouch, byTouch, spheresTouchingOutside, 16,
                touchSlack),
-        family("sphere touching a cylinder", "eta", kTouch, byTouch, sphereTouchingCylinder, 8,
+        family("spheres touching inside", "eta", kTouch, byTouch, spheresTouchingInside, 16,
+               touchSlack),
+        family("sphere touching a cylinder", "eta", kTouch, byTouch, sphereTouchingCylinder, 16,
                touchSlack),
         family(
             "sphere within tolerance of a plane, points a gap apart", "gap/tolerance",
-            {0.5, 0.9, 0.99}, [](double) { return 3e-4; }, sphereWithinToleranceOfPlane, 8,
+            {0.5, 0.9, 0.99}, [](double) { return 3e-4; }, sphereWithinToleranceOfPlane, 16,
             [](double) { return 1e-9; }),
         family("two cones with axes an angle apart", "angle", kAngles, byAngle, twoConesApart),
         family("point on two cylinders an angle from parallel", "angle", kAngles, byAngle,
@@ -448,7 +449,7 @@ const std::vector<DegenerateFamily>& degenerateFamilies() {
         // loses 1/θ of its digits to rounding in the evaluator itself (and in the data), 1e-9
         // of the size at θ = 1e-7; below that no exact known pose can be written down.
         family("line along a cylinder at an angle from its axis", "angle", {1e-4, 1e-5, 1e-6, 1e-7},
-               byAngle, lineAlongCylinder, 8,
+               byAngle, lineAlongCylinder, 16,
                [](double a) { return std::max(1e-12, 64 * kEps / a); }),
     };
     // Angles within ε of 0, π/2, π (line–line, plane–plane) and −π/2, 0, π/2 (line–plane, either
@@ -469,7 +470,7 @@ const std::vector<DegenerateFamily>& degenerateFamilies() {
         std::snprintf(label, sizeof label, "angle %s near %+.4f", p.label, target);
         f.push_back(family(
             label, "offset", offsets, fixedTolerance,
-            [s](WB& w, double eps, int k) { specialAngle(s, w, eps, k); }, 12));
+            [s](WB& w, double eps, int k) { specialAngle(s, w, eps, k); }, 24));
       }
     return f;
   }();

@@ -50,7 +50,7 @@ struct DegenerateFamily {
   std::string name;
   std::string level_name;      // what a level is: "angle", "gap", ...
   std::vector<double> levels;  // e.g. the angle between the two lines
-  int per_level = 8;           // instances per level (fixed seed)
+  int per_level = 16;          // instances per level (fixed seed)
   // How far (RelativeEvaluator::poseGap) the nearest branch pose may be from the known pose. The
   // data's rounding (1e-16 of the size) moves the exact solution by conditioning × 1e-16: 1/θ
   // for lines θ apart, sqrt for a sphere just touching a plane (a circle of radius r·sqrt(2η)
