@@ -43,14 +43,15 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
       f.build(w, level, k);
       Problem p = w.known().problem;
       p.name = "degenerate-" + std::to_string(k);
-      p = canonical(p);
+      const WrittenSpec written_spec = written(p);
+      p = written_spec.problem;
       const Isometry3d& known = w.known().X_WM_star;
       // The families are built at unit scale (coordinates within a few units), the degenerate
       // pair a small gap or angle apart inside it: their size is at least 1 however close that
       // pair is (two points 1e-12 apart are not a problem of size 1e-12 when their coordinates,
       // and so the data's own rounding, are of size 1).
       const double size = std::max(1.0, problemSize(p));
-      const std::string spec = specJson(p);
+      const std::string& spec = written_spec.text;
       // The generator's promise, on the problem as read back from its spec.
       const double slack = RelativeEvaluator(p, size).worst(known);
       ASSERT_LE(slack, f.known_slack(level)) << "generator: " << group << "\n" << spec;

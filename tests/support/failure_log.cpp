@@ -12,6 +12,11 @@ namespace relpos::test {
 void FailureLog::add(const std::string& group, const std::string& kind, const std::string& cause,
                      const std::string& details) {
   ++total_;
+  int& last = last_failed_[group];
+  if (last != cases_[group]) {
+    last = cases_[group];
+    ++failing_[group];
+  }
   ++by_kind_[{group, kind}];
   ++by_cause_[{group, kind + ": " + cause}];
   std::vector<std::string>& kept = shown_[{group, kind}];
@@ -37,8 +42,9 @@ std::string FailureLog::table(const std::string& title) const {
   os << "==== " << title << ": " << total_ << " failures ====\n";
   for (const auto& [group, n] : cases_) {
     const auto u = unhandled_.find(group);
+    const auto f = failing_.find(group);
     os << group << ": " << n << " cases, " << (u == unhandled_.end() ? 0 : u->second)
-       << " unhandled";
+       << " unhandled, " << (f == failing_.end() ? 0 : f->second) << " failing";
     for (const auto& [key, k] : by_kind_)
       if (key.first == group) os << ", " << k << " " << key.second;
     os << "\n";

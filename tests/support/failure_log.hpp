@@ -18,7 +18,8 @@ class FailureLog {
   // Nothing is reported until report().
   void add(const std::string& group, const std::string& kind, const std::string& cause,
            const std::string& details);
-  // Cases seen per group (failing or not), and per group the ones answered `unhandled`.
+  // Starts a case of the group (failing or not: add() then refers to it); unhandled() marks it
+  // answered `unhandled`.
   void count(const std::string& group) { ++cases_[group]; }
   void unhandled(const std::string& group) { ++unhandled_[group]; }
   int total() const { return total_; }
@@ -31,6 +32,8 @@ class FailureLog {
   int shown_per_kind_;
   int total_ = 0;
   std::map<std::string, int> cases_, unhandled_;
+  std::map<std::string, int> failing_;      // cases with at least one failure
+  std::map<std::string, int> last_failed_;  // the case number that failed last
   std::map<std::pair<std::string, std::string>, int> by_kind_;
   std::map<std::pair<std::string, std::string>, int> by_cause_;  // (group, kind: cause)
   // The shortest reproductions of each (group, kind), shortest first.

@@ -171,20 +171,28 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
   const double size = opt.size > 0.0 ? opt.size : problemSize(p);
   const RelativeEvaluator eval(p, size);
   std::mt19937_64 rng(opt.seed);
-  auto pose = [&](const Isometry3d& X, const Params& t, int dof, const std::string& what,
-                  std::size_t b) {
+  // `sample` ≥ 0: that sample; kNearest, kNearestKnown: the nearest poses (text only on failure:
+  // a check runs thousands of poses).
+  constexpr int kNearest = -1, kNearestKnown = -2;
+  auto pose = [&](const Isometry3d& X, const Params& t, int dof, int sample, std::size_t b) {
+    auto what = [&] {
+      return sample == kNearest        ? std::string("nearest (to the initial pose)")
+             : sample == kNearestKnown ? std::string("nearest to the known pose")
+                                       : "sample " + std::to_string(sample);
+    };
     if (!X.matrix().allFinite() || !finite(t, dof)) {
       if (rep.non_finite.empty())
-        rep.non_finite = "branch " + std::to_string(b) + " " + what + ": not finite: parameters " +
-                         paramsText(t, dof) + " -> " + poseText(X);
+        rep.non_finite = "branch " + std::to_string(b) + " " + what() +
+                         ": not finite: parameters " + paramsText(t, dof) + " -> " + poseText(X);
       return;
     }
     if (!rigid(X)) {
       if (rep.non_rigid.empty()) {
         std::ostringstream os;
         os.precision(3);
-        os << "branch " << b << " " << what << ": not a rotation, |RtR - I| = " << rigidityError(X)
-           << ", at parameters " << paramsText(t, dof) << ": " << poseText(X);
+        os << "branch " << b << " " << what()
+           << ": not a rotation, |RtR - I| = " << rigidityError(X) << ", at parameters "
+           << paramsText(t, dof) << ": " << poseText(X);
         rep.non_rigid = os.str();
       }
       return;
@@ -196,12 +204,39 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
       if (v > opt.violation_tolerance) {
         std::ostringstream os;
         os.precision(3);
-        os << "branch " << b << " " << what << " violates constraint " << which << " by " << v
+        os << "branch " << b << " " << what() << " violates constraint " << which << " by " << v
            << " (relative to size " << size << ") at parameters " << paramsText(t, dof) << ": "
            << poseText(X);
         rep.violating = os.str();
       }
     }
+  };
+  // The result line as written (with two samples per branch): every number finite. Its nearest
+  // poses are the ones checked below (nearestOnBranch is the costliest part of a check: it is
+  // not run twice for the same pose).
+  ResultOptions ro;
+  ro.samples = 2;
+  ro.window = size;
+  ro.seed = opt.seed;
+  std::string line;
+  writeResultLine(p, s, ro, line);
+  json doc;
+  try {
+    doc = json::parse(line);
+    checkNulls(doc, "", {}, s, &rep.bad_json);
+  } catch (const std::exception& e) {
+    rep.bad_json = std::string("result line does not parse: ") + e.what();
+  }
+  // The written nearest parameters of branch b, when they are all there (a null is reported).
+  auto writtenNearest = [&](std::size_t b, int dof, Params* t) {
+    if (!doc.is_object() || !doc.contains("branches") || b >= doc["branches"].size()) return false;
+    const json& ps = doc["branches"][b]["nearest"]["parameters"];
+    if (!ps.is_array() || static_cast<int>(ps.size()) != dof) return false;
+    for (int i = 0; i < dof; ++i) {
+      if (!ps[i].is_number()) return false;
+      (*t)[i] = ps[i].get<double>();
+    }
+    return true;
   };
   for (std::size_t b = 0; b < s.branches.size(); ++b) {
     const Manifold& m = *s.branches[b].manifold;
@@ -222,14 +257,15 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
     // Samples of a branch without valid bounds would be drawn from nowhere in particular (and
     // blamed as violations): the bounds are the failure.
     if (!bounds_ok) continue;
-    const NearestPose initial = nearestOnBranch(s.branches[b], p.mobile.pose);
-    if (!std::isfinite(initial.distance) && rep.non_finite.empty())
-      rep.non_finite = "branch " + std::to_string(b) + " nearest distance is not finite";
-    pose(initial.pose, initial.parameters, dof, "nearest (to the initial pose)", b);
-    Params centre = initial.parameters;
+    Params centre{};
+    if (!writtenNearest(b, dof, &centre)) {
+      const NearestPose initial = nearestOnBranch(s.branches[b], p.mobile.pose);
+      centre = initial.parameters;
+    }
+    pose(m.pose(centre), centre, dof, kNearest, b);
     if (opt.known) {
       const NearestPose k = nearestOnBranch(s.branches[b], *opt.known);
-      pose(k.pose, k.parameters, dof, "nearest to the known pose", b);
+      pose(k.pose, k.parameters, dof, kNearestKnown, b);
       if (k.pose.matrix().allFinite())
         rep.known_gap = std::min(rep.known_gap, eval.poseGap(k.pose, *opt.known));
       const Isometry3d projected = m.pose(m.project(*opt.known));
@@ -241,7 +277,7 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
     if (!finite(centre, dof)) centre = Params{};
     for (int k = 0; k < opt.samples_per_branch; ++k) {
       const Params t = drawParams(m, centre, 3.0 * size, rng);
-      pose(m.pose(t), t, dof, "sample " + std::to_string(k), b);
+      pose(m.pose(t), t, dof, k, b);
     }
   }
   if (opt.known && !s.branches.empty() && !(rep.known_gap <= opt.known_tolerance)) {
@@ -251,18 +287,6 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
        << opt.known_tolerance << " (relative; through the projection: " << rep.known_projection_gap
        << ")";
     rep.known_lost = os.str();
-  }
-  // The result line as written (with two samples per branch): every number finite.
-  ResultOptions ro;
-  ro.samples = 2;
-  ro.window = size;
-  ro.seed = opt.seed;
-  std::string line;
-  writeResultLine(p, s, ro, line);
-  try {
-    checkNulls(json::parse(line), "", {}, s, &rep.bad_json);
-  } catch (const std::exception& e) {
-    rep.bad_json = std::string("result line does not parse: ") + e.what();
   }
   return rep;
 }

@@ -74,16 +74,17 @@ std::string specJson(const Problem& p) {
   return doc.dump();
 }
 
-Problem canonical(const Problem& p) {
-  const std::string text = specJson(p);
-  ParseResult r = parseSpec(text, builtinRegistry(), p.name);
+WrittenSpec written(const Problem& p) {
+  WrittenSpec w{specJson(p), p};
+  ParseResult r = parseSpec(w.text, builtinRegistry(), p.name);
   if (!r.problem) {
     ADD_FAILURE() << "spec writer: " << (r.errors.empty() ? "" : r.errors.front().path) << ": "
                   << (r.errors.empty() ? "?" : r.errors.front().message) << "\n"
-                  << text;
-    return p;
+                  << w.text;
+    return w;
   }
-  return *r.problem;
+  w.problem = std::move(*r.problem);
+  return w;
 }
 
 }  // namespace relpos::test

@@ -1,7 +1,8 @@
 #pragma once
 // A Problem written back as a spec (SPEC.md §1), so that a failing property case prints a file
 // that `relpos solve` reproduces (as FCL prints the poses of a failing query). The property tests
-// solve the spec's own parse (canonical()), so the printed text is exactly the problem that failed.
+// solve the parse of the very text they print (written()): writing a parsed problem again is not
+// exact (a rotation's quaternion rounds), and near-degenerate verdicts flip on such last bits.
 #include <string>
 
 #include "relpos/core/problem.hpp"
@@ -13,9 +14,14 @@ namespace relpos::test {
 // they play no part in solving.
 std::string specJson(const Problem& p);
 
-// The problem as relpos reads specJson(p) back (ADD_FAILURE when that does not parse: a bug of
-// the writer). Directions come back normalised and rotations re-orthonormalised, so the result
-// differs from p by rounding only.
-Problem canonical(const Problem& p);
+// specJson(p) and the problem relpos reads from it (ADD_FAILURE when that does not parse: a bug
+// of the writer). Directions come back normalised and rotations re-orthonormalised, so the
+// problem differs from p by rounding only, and is exactly what the text describes.
+struct WrittenSpec {
+  std::string text;
+  Problem problem;
+};
+WrittenSpec written(const Problem& p);
+inline Problem canonical(const Problem& p) { return written(p).problem; }
 
 }  // namespace relpos::test
