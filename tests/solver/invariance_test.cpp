@@ -60,7 +60,7 @@ std::string cause(const Solution& s) {
   return std::string(toString(s.status)) + " [" + firedRules(s) + "]";
 }
 
-// Solves `p` (a transformed copy of the case, or the case itself), logs what is wrong with the
+// Solves the spec (a transformed copy of the case, or the case itself), logs what is wrong with the
 // answer on its own, and returns it.
 Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>& known, double size,
                        const std::string& group, std::uint64_t seed, const std::string& context,
