@@ -2,10 +2,9 @@
 // path"). Counts every global operator new while solving.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
 #include <atomic>
 #include <cstdlib>
+#include <filesystem>
 #include <new>
 
 #include "random_problems.hpp"
