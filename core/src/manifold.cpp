@@ -186,7 +186,13 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     proj_d = distanceWithTail(m, X, fixed, &proj);
     if (std::isnan(proj_d)) return referenceParams(m);
   }
-  if (fixed == (1u << n) - 1u || proj_d == 0.0) return proj;
+  // A pose on the manifold is its own projection, to the rounding of its coordinates: the search
+  // cannot improve on that, and in the combined metric (the translation of the mobile frame's
+  // origin) it may trade a rotation too small to see there for one that moves features far from
+  // that origin (a part frame 1e6 from its features).
+  const double rounding =
+      64 * std::numeric_limits<double>::epsilon() * (1.0 + X.translation().norm());
+  if (fixed == (1u << n) - 1u || proj_d <= rounding) return proj;
   Parameter par[kMaxDof];
   int angles[kMaxDof], n_angles = 0;
   for (int i = 0; i < n; ++i) {

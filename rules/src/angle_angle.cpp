@@ -13,9 +13,10 @@ using namespace detail;
 
 // App. II: unit vectors at angle a from u and b from v (u, v independent unit vectors).
 // Returns how many (0, 1 or 2). `*err`: how far they may be from the exact ones when the angles
-// and vectors are known to `in_err` (a first-order bound; a square root where the cones touch).
+// and vectors are known to `in_err` (a first-order bound; a square root where the cones touch);
+// `*gain`: how much the axes' closeness magnifies in_err in it (1 + 2 / sin of their angle).
 int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const Tolerance& tol,
-               double in_err, Vector3d s[2], double* err) {
+               double in_err, Vector3d s[2], double* err, double* gain) {
   const double cs = u.dot(v);
   const Vector3d vu = (v - cs * u).normalized();
   const Vector3d w = u.cross(vu);
@@ -24,7 +25,8 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
   const double ct2 = std::sin(a) * std::sin(a) - cphi * cphi;
   // The position across the cones' common plane (cphi) moves by e; their height above it (ct) by
   // e / ct, or by sqrt(2 e) where they barely meet.
-  const double e = in_err * (1.0 + 2.0 / ss);
+  *gain = 1.0 + 2.0 / ss;
+  const double e = in_err * *gain;
   *err = in_err > 0.0 ? e + std::min(e / std::sqrt(std::max(ct2, 0.0)), std::sqrt(2.0 * e)) : 0.0;
   if (ct2 < -4 * (tol.angle + e)) return 0;
   const Vector3d base = std::cos(a) * u + cphi * vu;
@@ -41,11 +43,12 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
 enum Case { kIncompatible, kSameVector, kTwoCones, kParallelFixes, kParallelAndAngle };
 
 // Whether the directions s± are known well enough to replace the cones by: where the cones' axes
-// are nearly parallel, their meeting moves by far more than the vectors' own uncertainty
-// (1/sin of the axes' angle), and a parallelism that uncertain would let later comparisons wave
-// real differences through. The pair is then left to the two-angle rotation (App. III-D).
-bool wellConditioned(double err, double in_err, const Tolerance& given) {
-  return err <= 1e3 * given.angle + 10.0 * in_err;
+// are nearly parallel, their meeting moves by far more than the vectors' own uncertainty (gain:
+// 1/sin of the axes' angle), and a parallelism that uncertain would let later comparisons wave
+// real differences through. The pair is then left to the two-angle rotation (App. III-D). (The
+// square root where the cones barely meet is no gain of rounding but the geometry's own.)
+bool wellConditioned(double gain, double in_err, const Tolerance& given) {
+  return in_err == 0.0 || !given.tooIllConditioned(gain);
 }
 
 struct Ang {
@@ -87,12 +90,12 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
               "X)");
     }
     Vector3d s[2];
-    double err = 0.0;
-    const int n = sPlusMinus(a.f, b.f, a.a, b.a, given, in_err, s, &err);
+    double err = 0.0, gain = 1.0;
+    const int n = sPlusMinus(a.f, b.f, a.a, b.a, given, in_err, s, &err, &gain);
     if (n == 0)
       return out.fire(kIncompatible)
           .incompatible("no direction makes both angles (PMF App. IV Table X, row 1)");
-    if (!wellConditioned(err, in_err, given)) return;
+    if (!wellConditioned(gain, in_err, given)) return;
     out.fire(kTwoCones);
     for (int k = 0; k < n; ++k) one(out, withErr(Fundamental::angle(a.m, s[k], 0.0, 0), err));
     return;
@@ -126,14 +129,14 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
             "Table X)");
   }
   Vector3d s[2];
-  double err = 0.0;
-  const int n = sPlusMinus(par.f, ang.f, sm, ang.a, given, in_err, s, &err);
+  double err = 0.0, gain = 1.0;
+  const int n = sPlusMinus(par.f, ang.f, sm, ang.a, given, in_err, s, &err, &gain);
   if (n == 0)
     return out.fire(kIncompatible)
         .incompatible(
             "a parallelism and an angle that no rotation satisfies together (PMF App. IV Table X, "
             "row 1)");
-  if (!wellConditioned(err, in_err, given)) return;
+  if (!wellConditioned(gain, in_err, given)) return;
   out.fire(kParallelAndAngle);
   for (int k = 0; k < n; ++k) {
     Alt& alt = out.addAlternative();

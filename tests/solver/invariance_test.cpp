@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -64,7 +65,7 @@ std::string cause(const Solution& s) {
 // answer on its own, and returns it.
 Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>& known, double size,
                        const std::string& group, std::uint64_t seed, const std::string& context,
-                       FailureLog& log) {
+                       FailureLog& log, double reach = 0.0) {
   const Problem& p = spec.problem;
   Solution s = solve(p, builtinRegistry());
   log.count(group);
@@ -79,6 +80,11 @@ Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>&
   opt.size = size;
   opt.seed = seed;
   opt.known = known ? &*known : nullptr;
+  // A frame origin `reach` from the features: its coordinates carry ulp(reach) of rounding, so the
+  // branch's rotation is known to ~ulp(reach) / size, and the nearest pose — nearest at that
+  // origin, SPEC.md §2 — may turn the features by that much times the lever `reach`.
+  const double lever = reach / size;
+  opt.known_tolerance += 64 * std::numeric_limits<double>::epsilon() * lever * lever;
   const CheckReport r = checkSolution(p, s, opt);
   if (!r.non_finite.empty())
     log.add(group, "NaN/inf pose", cause(s), r.non_finite + "\n" + details);
@@ -107,7 +113,9 @@ void runCase(const Case& c, std::uint64_t seed, FailureLog& log) {
     // The transform's own promise: the same problem, so the known pose still solves it (to the
     // data's rounding: coordinates of 1e6 carry 2e-10 each), and the same size (times s).
     const double scaled_size = size * t.lengthFactor();
-    EXPECT_NEAR(problemSize(p), scaled_size, 1e-9 * scaled_size) << t.label << ": " << c.name;
+    // (Moved 1e6 away, each coordinate carries ~1e-10 of rounding, which the size sees.)
+    EXPECT_NEAR(problemSize(p), scaled_size, 1e-9 * scaled_size + 1e-15 * t.reach())
+        << t.label << ": " << c.name;
     if (known) {
       EXPECT_LT(RelativeEvaluator(p, scaled_size).worst(*known), 1e-8)
           << "transform: " << t.label << ": " << c.name << "\n"
@@ -115,7 +123,9 @@ void runCase(const Case& c, std::uint64_t seed, FailureLog& log) {
     }
     const std::string context = c.name + ", " + t.label + "\noriginal spec: " + c.spec.text +
                                 "\noriginal result: " + verdict(s0);
-    const Solution s = solveAndCheck(spec, known, scaled_size, t.label, seed, context, log);
+    const double lever = t.kind == ProblemTransform::Kind::kMoveMobileFrame ? t.reach() : 0.0;
+    const Solution s =
+        solveAndCheck(spec, known, scaled_size, t.label, seed, context, log, lever);
     std::string kind;
     if (s.status != s0.status)
       kind = "status changed";

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 // Transforms that leave a problem's answer unchanged up to a known map of poses, for the
 // invariance tests (issue 13: "same status, branch count and DOF scaled ×1e-6 and ×1e6 and moved
 // 1e6 away"). Each maps the problem (features, poses, values) and a mobile pose of the original
@@ -35,6 +36,8 @@ struct ProblemTransform {
   Isometry3d applyToPose(const Isometry3d& X_WM) const;
   // How lengths of the problem scale (s for kScale, else 1).
   double lengthFactor() const { return kind == Kind::kScale ? s : 1.0; }
+  // How far the transform moves coordinates (their rounding grows with it).
+  double reach() const { return std::max(G.translation().norm(), o.norm()); }
 
   static ProblemTransform scale(double s);
   static ProblemTransform moveWorld(const Isometry3d& G, const std::string& label);
