@@ -4,6 +4,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "derived_sets.hpp"
 #include "relpos/core/solution.hpp"
@@ -29,11 +30,14 @@ struct Angle {
 Angle normalise(const Fundamental& f, const Tolerance& given) {
   const Tolerance tol = given.widened(f.err);
   Angle a{f.p, f.q, f.value(), false, f.sources, f.err};
+  // A snap moves the constraint by up to the tolerance: that joins its uncertainty.
   if (tol.zeroAngle(a.alpha)) {
     a.parallel = true;
+    a.err += std::abs(a.alpha);
     a.alpha = 0;
   } else if (tol.equalAngle(a.alpha, kPi)) {
     a.parallel = true;
+    a.err += std::abs(kPi - a.alpha);
     a.alpha = 0;
     a.u_f = -a.u_f;
   }
@@ -225,39 +229,44 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
 }
 
 // Two parallelisms on independent vectors fix the rotation (App. III-A); every other rotational
-// constraint then either holds (implied) or proves the set inconsistent. The pair is the best
-// known one (least err), so that the others are checked against the most reliable rotation.
+// constraint then either holds (implied) or proves the set inconsistent. The pair is the one that
+// fixes it best: the rotation about the first vector is read off the second's part across it,
+// known to (their uncertainties + rounding) / sin of their angle, so two parallelisms on nearly
+// parallel vectors fix it poorly however exact they are. The others are checked against it within
+// that and their own uncertainty.
 MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
                                RotationAlternatives& out) {
-  int order[kMaxFundamentals];
-  int m = 0;
-  for (int i = 0; i < n; ++i)
-    if (ang[i].parallel) order[m++] = i;
-  // (Ties by position: deterministic, and std::stable_sort would allocate its buffer.)
-  std::sort(order, order + m, [&](int x, int y) {
-    return ang[x].err != ang[y].err ? ang[x].err < ang[y].err : x < y;
-  });
-  for (int oi = 0; oi < m; ++oi) {
-    const Angle& a = ang[order[oi]];
-    for (int oj = oi + 1; oj < m; ++oj) {
-      const Angle& b = ang[order[oj]];
-      if (a.u_m.cross(b.u_m).norm() <= ctx.tol.widened(a.err + b.err).angle) continue;
-      RotationAlternatives two;
-      MatchResult r = twoParallels(ctx, a, b, two);
-      if (r != MatchResult::kMatched) return r;
-      const Matrix3d R = two.parts[0].R0;
-      for (int k = 0; k < n; ++k) {
-        const Tolerance tol = ctx.tol.widened(a.err + b.err + ang[k].err);
-        if (!tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
-          return inconsistent(ctx, a.sources | b.sources | ang[k].sources,
-                              "a rotation fixed by two parallelisms violates another rotational "
-                              "constraint");
-      }
-      out.add(two.parts[0]);
-      return MatchResult::kMatched;
+  constexpr double kRounding = 16 * std::numeric_limits<double>::epsilon();
+  int best_i = -1, best_j = -1;
+  double best_u = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    if (!ang[i].parallel) continue;
+    for (int j = i + 1; j < n; ++j) {
+      if (!ang[j].parallel) continue;
+      const double s = ang[i].u_m.cross(ang[j].u_m).norm();
+      if (s <= ctx.tol.widened(ang[i].err + ang[j].err).angle) continue;
+      const double u = std::min(ang[i].err, ang[j].err) +
+                       (ang[i].err + ang[j].err + ctx.tol.angle + kRounding) / s;
+      if (u < best_u) best_u = u, best_i = i, best_j = j;  // (ties: the first, deterministic)
     }
   }
-  return MatchResult::kNoMatch;
+  if (best_i < 0) return MatchResult::kNoMatch;
+  const Angle& a = ang[best_i];
+  const Angle& b = ang[best_j];
+  RotationAlternatives two;
+  MatchResult r = twoParallels(ctx, a, b, two);
+  if (r != MatchResult::kMatched) return r;
+  const Matrix3d R = two.parts[0].R0;
+  for (int k = 0; k < n; ++k) {
+    if (k == best_i || k == best_j) continue;
+    const Tolerance tol = ctx.tol.widened(best_u + ang[k].err);
+    if (!tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
+      return inconsistent(ctx, a.sources | b.sources | ang[k].sources,
+                          "a rotation fixed by two parallelisms violates another rotational "
+                          "constraint");
+  }
+  out.add(two.parts[0]);
+  return MatchResult::kMatched;
 }
 
 // A total order on angle constraints by their geometry alone, so that the branches do not depend

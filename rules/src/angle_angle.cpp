@@ -17,12 +17,20 @@ using namespace detail;
 // `*gain`: how much the axes' closeness magnifies in_err in it (1 + 2 / sin of their angle).
 int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const Tolerance& tol,
                double in_err, Vector3d s[2], double* err, double* gain) {
+  // In the basis (u, v_u, w): s = cos a u + c_φ v_u ± c_t w with s·v = cos b. Near parallel axes
+  // every term below is taken where it keeps its digits: v's part across u and sin σ from the
+  // short difference of the axes, 1 − cos σ from it too, cos b − cos a from the half-angles
+  // (cos b − cos a cos σ would cancel to rounding, then be divided by sin σ).
   const double cs = u.dot(v);
-  const Vector3d vu = (v - cs * u).normalized();
+  const Vector3d v_perp = perpendicularPart(v, u);
+  const double ss = v_perp.norm();
+  const Vector3d vu = v_perp / ss;
   const Vector3d w = u.cross(vu);
-  const double ss = std::sqrt(std::max(0.0, 1 - cs * cs));
-  const double cphi = (std::cos(b) - std::cos(a) * cs) / ss;
-  const double ct2 = std::sin(a) * std::sin(a) - cphi * cphi;
+  const double one_minus_cs = cs > 0.0 ? 0.5 * (v - u).squaredNorm() : 1.0 - cs;
+  const double cb_minus_ca = -2.0 * std::sin(0.5 * (a + b)) * std::sin(0.5 * (b - a));
+  const double cphi = (cb_minus_ca + std::cos(a) * one_minus_cs) / ss;
+  const double sa = std::sin(a);
+  const double ct2 = (sa - cphi) * (sa + cphi);
   // The position across the cones' common plane (cphi) moves by e; their height above it (ct) by
   // e / ct, or by sqrt(2 e) where they barely meet.
   *gain = 1.0 + 2.0 / ss;
@@ -58,20 +66,23 @@ struct Ang {
   double err;
 };
 
-// Snap angles at 0 or π to a parallelism with the fixed vector flipped.
-Ang snap(const Fundamental& x, const Tolerance& tol) {
+// Snap angles at 0 or π to a parallelism with the fixed vector flipped. The snap moves the
+// constraint by up to the tolerance: that joins its uncertainty, or two parallelisms each snapped
+// by the tolerance would be compared within it (and found apart by twice it).
+Ang snap(const Fundamental& x, const Tolerance& given) {
+  const Tolerance tol = given.widened(x.err);
   Ang r{x.p, x.q, x.value(), x.sources, x.err};
-  if (tol.equalAngle(r.a, kPi)) r.f = -r.f, r.a = 0;
-  if (tol.zeroAngle(r.a)) r.a = 0;
+  if (tol.equalAngle(r.a, kPi)) r.f = -r.f, r.a = kPi - r.a;
+  if (tol.zeroAngle(r.a)) r.err += std::abs(r.a), r.a = 0;
   return r;
 }
 
 void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& given,
                RuleOutput& out) {
-  // Every comparison allows for how far derived vectors may be from the exact ones.
-  const double in_err = fa.err + fb.err;
+  Ang a = snap(fa, given), b = snap(fb, given);
+  // Every comparison allows for how far derived or snapped vectors may be from the exact ones.
+  const double in_err = a.err + b.err;
   const Tolerance tol = given.widened(in_err);
-  Ang a = snap(fa, tol), b = snap(fb, tol);
   // Same mobile vector (σ_m = 0 or π): one vector at α from u_f and β from v_f.
   double sm = angleBetween(a.m, b.m);
   if (sm >= kPi - tol.angle) b.m = -b.m, b.a = kPi - b.a, sm = 0;
@@ -82,7 +93,7 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
       // Keep the one known best: the solution then meets the other within its uncertainty.
       if (tol.equalAngle(a.a, b.a)) {
         out.fire(kSameVector);
-        return fa.err > fb.err ? out.redundantFirst() : out.redundantSecond();
+        return a.err > b.err ? out.redundantFirst() : out.redundantSecond();
       }
       return out.fire(kIncompatible)
           .incompatible(
