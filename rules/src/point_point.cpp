@@ -1,6 +1,7 @@
 // PMF App. IV Table I: two point-point distance constraints d(P_a, P_b) = p, d(Q_a, Q_b) = q.
 // a = the mobile object, b = the fixed one; d_a = |P_a Q_a|, d_b = |P_b Q_b|, u_b = P_bQ_b / d_b.
 // (The rows with p = 0 or q = 0 and d_a ≠ 0 are the pinned-point rules, pinned_point.cpp.)
+#include <algorithm>
 #include <cmath>
 
 #include "relpos/rules/builtin.hpp"
@@ -30,14 +31,16 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
     if (tol.zeroLength(p) || tol.zeroLength(q)) return;  // pinned-point rules
     // Nearly concentric spheres: where they meet is known to rounding × max(p, q) / d_b.
     if (tol.tooIllConditioned(std::max(p, q) / db)) return out.defer();
-    if (tol.equalLength(db, p + q))
-      return one(out.fire(kTangentSpheres), pinPoint(a, a.q + p * u_b));
-    if (tol.equalLength(db, std::abs(p - q)))
-      return one(out.fire(kTangentSpheres), pinPoint(a, a.q + (p > q ? p : -p) * u_b));
-    // Row 4: the circle where the spheres meet, in the plane ⊥ u_b at k from P_b.
+    // Row 4: the circle where the spheres meet, in the plane ⊥ u_b at k from P_b. They touch
+    // (rows 3 and 5) when the circle is within the tolerance of a point: decided on its radius,
+    // not on d_b − (p ± q), which for nearly concentric spheres can be within the tolerance while
+    // the circle is large.
     const double k = (db * db + p * p - q * q) / (2 * db);
-    const double r = std::sqrt(std::max(0.0, p * p - k * k));
-    return two(out.fire(kCircle), onLine(a, a.q, u_b, r), onPlane(a, a.q + k * u_b, u_b));
+    const double r2 = p * p - k * k;
+    if (r2 <= 2.0 * tol.length * std::max(p, q))
+      return one(out.fire(kTangentSpheres), pinPoint(a, a.q + std::clamp(k, -p, p) * u_b));
+    return two(out.fire(kCircle), onLine(a, a.q, u_b, std::sqrt(r2)),
+               onPlane(a, a.q + k * u_b, u_b));
   }
   if (tol.zeroLength(p) && tol.zeroLength(q)) {
     // Row 7: both points pinned, equal spans: P pinned and P_aQ_a kept along P_bQ_b.
