@@ -51,6 +51,25 @@ void setUnhandled(SolveState& st, const std::string& why) {
   st.any_unhandled = true;
 }
 
+// Every call into registered code (a plugin's, or a built-in registered the same way) goes
+// through guarded(): an exception from it becomes the solve's `unhandled` reason, "ITEM (plugin
+// PATH) threw: WHAT", instead of unwinding through a batch worker or out of main. The try costs
+// nothing while nothing throws; `item` (which allocates) is only called when something did.
+template <typename Call, typename Item>
+bool guarded(SolveState& st, Call&& call, Item&& item) {
+  std::string what;
+  try {
+    call();
+    return true;
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+    what = "an exception that is not a std::exception";
+  }
+  setUnhandled(st, item() + " threw: " + what);
+  return false;
+}
+
 std::string describeSet(const ConstraintSet& set) {
   std::string s;
   auto list = [&s](const char* title, const auto& v) {
@@ -93,7 +112,10 @@ restart:
         const Fundamental& a = entry.swapped ? list[j] : list[i];
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();
-        rule.fn(a, b, st.tol, out);
+        if (!guarded(
+                st, [&] { rule.fn(a, b, st.tol, out); },
+                [&] { return "rule '" + rule.name + "'" + originNote(rule.origin); }))
+          return SetOutcome::kUnhandled;
         if (out.verdict == RuleVerdict::kNoChange) continue;
         st.solution.noteRule(rule.firedName(out.fired).c_str());
         if (++steps > st.options.max_rule_steps) {
@@ -174,9 +196,16 @@ void decomposeAll(const Problem& problem, SolveState& st) {
                            toString(c.mobile.kind) + " features");
       return;
     }
+    // Named for a message, built only when one is needed.
+    auto typeItem = [&](const char* call) {
+      return "constraint " + std::to_string(i) + ": the " + call + " of constraint type '" +
+             c.type + "'" + originNote(type->origin);
+    };
     if (type->check) {
       st.ws.problems.clear();
-      type->check(c, st.ws.problems);
+      if (!guarded(
+              st, [&] { type->check(c, st.ws.problems); }, [&] { return typeItem("value check"); }))
+        return;
       if (!st.ws.problems.empty()) {
         setUnhandled(st, "constraint " + std::to_string(i) + " is invalid: " + st.ws.problems[0]);
         return;
@@ -185,7 +214,10 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     dec.alternatives.clear();
     dec.unhandled = nullptr;
     Feature fixed_W = c.fixed.placed(problem.fixed.pose);
-    type->decompose(c, fixed_W, SourceMask{1} << i, dec);
+    if (!guarded(
+            st, [&] { type->decompose(c, fixed_W, SourceMask{1} << i, dec); },
+            [&] { return typeItem("decomposition"); }))
+      return;
     if (dec.unhandled) {
       setUnhandled(st, "constraint " + std::to_string(i) + " (" + c.type + " " +
                            toString(c.fixed.kind) + "-" + toString(c.mobile.kind) +
@@ -228,6 +260,75 @@ bool allRevolved(const Solution& solution, std::size_t first) {
   return true;
 }
 
+// Calls every method of m once (`call` names the one running), at the middle of its parameter
+// box; returns what is unusable about it without throwing, or "".
+std::string exercise(const ManifoldHolder& holder, const char*& type, const char*& call) {
+  if (!holder) return "a branch without a manifold";
+  const Manifold& m = *holder;
+  call = "typeName()";
+  type = m.typeName();
+  if (!type) return "typeName() is null";
+  call = "dof()";
+  const int dof = m.dof();
+  if (dof < 0 || dof > kMaxDof)
+    return "dof() is " + std::to_string(dof) + ", outside 0.." + std::to_string(kMaxDof);
+  call = "rotationalDof()";
+  (void)m.rotationalDof();
+  call = "translationalDof()";
+  (void)m.translationalDof();
+  Params theta{};
+  call = "parameter(i)";
+  for (int i = 0; i < dof; ++i) {
+    const Parameter p = m.parameter(i);
+    if (!p.name) return "parameter(" + std::to_string(i) + ") has no name";
+    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
+    theta[i] = lo && hi ? 0.5 * (p.min + p.max) : lo ? p.min : hi ? p.max : 0.0;
+  }
+  call = "pose()";
+  const Isometry3d X = m.pose(theta);
+  call = "project()";
+  Params back = m.project(X);
+  call = "closedFormParams()";
+  (void)m.closedFormParams();
+  call = "poseWithTail()";
+  (void)m.poseWithTail(X, &back);
+  call = "describe()";
+  (void)m.describe();
+  call = "copyInto()";
+  const ManifoldHolder copy(holder);
+  return "";
+}
+
+// A plugin's branches are run once here, under the guard, before anything else uses them: a
+// manifold whose methods throw, or that claims more parameters than a pose has room for, is an
+// `unhandled` answer naming the plugin, not an exception (or an overrun) later in the writer,
+// the nearest-pose search or the collision filter. Each branch also records its plugin, for
+// whatever still throws later (Branch::origin). Built-in matchers' branches are left alone.
+bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t first) {
+  if (matcher.origin == "built-in") return true;
+  const char* origin = st.registry.libraryPath(matcher.origin);
+  for (std::size_t b = first; b < st.solution.branches.size(); ++b) {
+    Branch& branch = st.solution.branches[b];
+    branch.origin = origin;
+    const char* type = "?";
+    const char* call = "";
+    std::string problem;
+    auto item = [&](bool in_call) {
+      return std::string(in_call ? call : "") + (in_call ? " of " : "") + "manifold '" + type +
+             "' from matcher '" + matcher.name + "'" + originNote(matcher.origin);
+    };
+    if (!guarded(
+            st, [&] { problem = exercise(branch.manifold, type, call); },
+            [&] { return item(true); }))
+      return false;
+    if (!problem.empty()) {
+      setUnhandled(st, item(false) + " is unusable: " + problem);
+      return false;
+    }
+  }
+  return true;
+}
+
 void listBits(SourceMask m, std::vector<int>& out) {
   for (int k = 0; k < 64; ++k)
     if (m >> k & 1) out.push_back(k);
@@ -257,15 +358,22 @@ void runPending(SolveState& st) {
     const ConstraintSet& set = ws.pending[s];
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
+    const MatcherInfo* matched = nullptr;
     for (const MatcherInfo& m : st.registry.matchers()) {
       MatchContext ctx{set, st.tol, solution, &deferSet, &st};
-      r = m.fn(ctx);
+      if (!guarded(
+              st, [&] { r = m.fn(ctx); },
+              [&] { return "matcher '" + m.name + "'" + originNote(m.origin); }))
+        break;
+      matched = &m;
       if (r == MatchResult::kInconsistent) {
         st.conflicts |= ctx.conflict;
         st.conflict_reason = ctx.reason;
       }
       if (r != MatchResult::kNoMatch) break;
     }
+    if (st.any_unhandled) break;  // a matcher threw
+    if (r == MatchResult::kMatched && !checkPluginBranches(st, *matched, before)) break;
     if (r == MatchResult::kNoMatch) {
       setUnhandled(st, "no solution manifold matches the combined constraints:" + describeSet(set));
       break;

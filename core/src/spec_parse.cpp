@@ -442,7 +442,7 @@ class Parser {
     }
     if (ok && vals_ok && type && type->check) {
       std::vector<std::string> problems;
-      type->check(*c, problems);
+      type->checkValues(*c, problems);  // what a plugin's check throws is one more problem
       for (const auto& p : problems) {
         // "field: message" -> path.field: message
         auto colon = p.find(": ");
