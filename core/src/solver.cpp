@@ -358,22 +358,22 @@ void runPending(SolveState& st) {
     const ConstraintSet& set = ws.pending[s];
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
-    const MatcherInfo* matched = nullptr;
     for (const MatcherInfo& m : st.registry.matchers()) {
       MatchContext ctx{set, st.tol, solution, &deferSet, &st};
+      const std::size_t had = solution.branches.size();
       if (!guarded(
               st, [&] { r = m.fn(ctx); },
               [&] { return "matcher '" + m.name + "'" + originNote(m.origin); }))
         break;
-      matched = &m;
+      // Whatever it answered: a branch left behind by a matcher that passed is used all the same.
+      if (solution.branches.size() > had && !checkPluginBranches(st, m, had)) break;
       if (r == MatchResult::kInconsistent) {
         st.conflicts |= ctx.conflict;
         st.conflict_reason = ctx.reason;
       }
       if (r != MatchResult::kNoMatch) break;
     }
-    if (st.any_unhandled) break;  // a matcher threw
-    if (r == MatchResult::kMatched && !checkPluginBranches(st, *matched, before)) break;
+    if (st.any_unhandled) break;  // a matcher threw, or made an unusable branch
     if (r == MatchResult::kNoMatch) {
       setUnhandled(st, "no solution manifold matches the combined constraints:" + describeSet(set));
       break;

@@ -134,6 +134,16 @@ TEST(PluginGuards, EveryManifoldMethodThatThrows) {
   }
 }
 
+// A matcher that answers "no match" but leaves a branch behind: the branch is checked all the
+// same, under the name of the matcher that made it.
+TEST(PluginGuards, ABranchLeftBehindByAMatcherThatPassed) {
+  Solution s;
+  ASSERT_NO_THROW(s = solve(onePair("bad-manifold", manifold_throws::kStrayBranch),
+                            registryWith("manifold-throws")));
+  expectUnhandled(s, {"describe() of manifold 'Bad' from matcher 'bad-manifold-stray' " +
+                      pluginNote("manifold-throws") + " threw: describe blew up"});
+}
+
 TEST(PluginGuards, APluginBranchRecordsItsPlugin) {
   const Registry r = registryWith("manifold-throws");
   const Solution s = solve(onePair("bad-manifold", manifold_throws::kWellBehaved), r);

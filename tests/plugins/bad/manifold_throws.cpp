@@ -92,8 +92,21 @@ MatchResult match(MatchContext& ctx) {
     return MatchResult::kNoMatch;
   const int mode = static_cast<int>(ts[0].lo);
   ctx.out.branches.emplace_back();
-  if (mode != kNoManifold) ctx.out.branches.back().manifold.emplace<BadManifold>(mode);
+  if (mode != kNoManifold)
+    ctx.out.branches.back().manifold.emplace<BadManifold>(mode == kStrayBranch ? kWellBehaved
+                                                                               : mode);
   return MatchResult::kMatched;
+}
+
+// Runs before match(): for kStrayBranch, appends a branch and still says it does not match.
+MatchResult leaveAStray(MatchContext& ctx) {
+  const auto& ts = ctx.set.translational;
+  if (ts.size() == 1 && ts[0].kind == FundamentalKind::kCustom && ts[0].custom == g_kind &&
+      ts[0].lo == kStrayBranch) {
+    ctx.out.branches.emplace_back();
+    ctx.out.branches.back().manifold.emplace<BadManifold>(kDescribeThrows);
+  }
+  return MatchResult::kNoMatch;
 }
 
 double residual(const Fundamental&, const Isometry3d&) { return 0.0; }
@@ -107,6 +120,7 @@ void registerAll(Registry& registry) {
   t.decompose = &decompose;
   registry.addConstraintType(t);
   registry.addManifold({"Bad", "misbehaves as the constraint's value says", ""});
+  registry.addMatcher({"bad-manifold-stray", &leaveAStray});
   registry.addMatcher({"bad-manifold", &match});
 }
 }  // namespace manifold_throws

@@ -16,6 +16,8 @@ enum Mode : int {
   kUnnamedParameter,        // parameter(0).name is null
   kNoManifold,              // the matcher appends a branch without a manifold
   kPoseThrowsAwayFromZero,  // passes the solver's check at θ = 0, throws anywhere else
+  kStrayBranch,  // a first matcher leaves a branch whose describe() throws and passes; the
+                 // second emits a good one
   kWellBehaved,
 };
 
