@@ -260,9 +260,13 @@ bool allRevolved(const Solution& solution, std::size_t first) {
   return true;
 }
 
-// Calls every method of m once (`call` names the one running), at the middle of its parameter
-// box; returns what is unusable about it without throwing, or "".
-std::string exercise(const ManifoldHolder& holder, const char*& type, const char*& call) {
+// What would make a branch unusable without any exception to catch later: no manifold, no type
+// name, more parameters than a pose has room for (Params: kMaxDof), a parameter without a name
+// (the writer copies them). `call` names the method running, should one of them throw. These are
+// the cheap calls; the ones that compute (pose, project, describe, ...) cost about as much as
+// the whole solve again, so what they throw is caught where they are called (the result writer,
+// `solve --collision`), still naming the plugin through Branch::origin.
+std::string unusable(const ManifoldHolder& holder, const char*& type, const char*& call) {
   if (!holder) return "a branch without a manifold";
   const Manifold& m = *holder;
   call = "typeName()";
@@ -276,34 +280,16 @@ std::string exercise(const ManifoldHolder& holder, const char*& type, const char
   (void)m.rotationalDof();
   call = "translationalDof()";
   (void)m.translationalDof();
-  Params theta{};
   call = "parameter(i)";
-  for (int i = 0; i < dof; ++i) {
-    const Parameter p = m.parameter(i);
-    if (!p.name) return "parameter(" + std::to_string(i) + ") has no name";
-    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
-    theta[i] = lo && hi ? 0.5 * (p.min + p.max) : lo ? p.min : hi ? p.max : 0.0;
-  }
-  call = "pose()";
-  const Isometry3d X = m.pose(theta);
-  call = "project()";
-  Params back = m.project(X);
-  call = "closedFormParams()";
-  (void)m.closedFormParams();
-  call = "poseWithTail()";
-  (void)m.poseWithTail(X, &back);
-  call = "describe()";
-  (void)m.describe();
-  call = "copyInto()";
-  const ManifoldHolder copy(holder);
+  for (int i = 0; i < dof; ++i)
+    if (!m.parameter(i).name) return "parameter(" + std::to_string(i) + ") has no name";
   return "";
 }
 
-// A plugin's branches are run once here, under the guard, before anything else uses them: a
-// manifold whose methods throw, or that claims more parameters than a pose has room for, is an
-// `unhandled` answer naming the plugin, not an exception (or an overrun) later in the writer,
-// the nearest-pose search or the collision filter. Each branch also records its plugin, for
-// whatever still throws later (Branch::origin). Built-in matchers' branches are left alone.
+// A plugin's branches are checked here, under the guard, before anything else uses them: a
+// manifold that would overrun the writer, or whose cheap methods throw, is an `unhandled` answer
+// naming the plugin. Each branch also records its plugin (Branch::origin), for what its other
+// methods throw later. Built-in matchers' branches are left alone.
 bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t first) {
   if (matcher.origin == "built-in") return true;
   const char* origin = st.registry.libraryPath(matcher.origin);
@@ -318,7 +304,7 @@ bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t
              "' from matcher '" + matcher.name + "'" + originNote(matcher.origin);
     };
     if (!guarded(
-            st, [&] { problem = exercise(branch.manifold, type, call); },
+            st, [&] { problem = unusable(branch.manifold, type, call); },
             [&] { return item(true); }))
       return false;
     if (!problem.empty()) {

@@ -127,7 +127,7 @@ const Throwing kThrowing[] = {
     {"rule-throws", "explodes-in-rule", -1, ") threw: the rule blew up"},
     {"matcher-throws", "explodes-in-matcher", -1, ") threw: the matcher blew up"},
     {"manifold-throws", "bad-manifold", manifold_throws::kDescribeThrows,
-     ") threw: describe blew up"},
+     " threw while writing the result: describe blew up"},
     {"manifold-throws", "bad-manifold", manifold_throws::kTooManyDof,
      ") is unusable: dof() is 7, outside 0..6"},
     // Passes the solver's check at θ = 0; the samples the writer draws are elsewhere.

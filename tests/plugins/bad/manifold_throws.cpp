@@ -1,7 +1,8 @@
 // A manifold that throws from the method the constraint's value names (manifold_throws.hpp), or
 // is unusable without throwing, emitted by this plugin's matcher for the type `bad-manifold`:
-// the solve must answer `unhandled` naming this plugin, and so must whatever runs the manifold's
-// code after the solve (the result writer's nearest-pose search and samples).
+// the solve (for the cheap methods it checks) or whatever runs the manifold's code after it (the
+// result writer's nearest-pose search and samples, the collision filter) must answer
+// `unhandled` naming this plugin.
 #include "manifold_throws.hpp"
 
 #include <limits>
@@ -62,15 +63,11 @@ class BadManifold final : public ManifoldBase<BadManifold> {
   }
   unsigned closedFormParams() const override {
     throwIf(mode_ == kClosedFormParamsThrows, "closedFormParams");
-    return 0u;
+    return mode_ == kPoseWithTailThrows ? 1u : 0u;  // the nearest-pose search calls it then
   }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override {
     throwIf(mode_ == kPoseWithTailThrows, "poseWithTail");
     return Manifold::poseWithTail(X, theta);
-  }
-  Manifold* copyInto(void* storage) const override {
-    throwIf(mode_ == kCopyIntoThrows, "copyInto");
-    return ManifoldBase<BadManifold>::copyInto(storage);
   }
 
  private:
@@ -104,7 +101,7 @@ MatchResult leaveAStray(MatchContext& ctx) {
   if (ts.size() == 1 && ts[0].kind == FundamentalKind::kCustom && ts[0].custom == g_kind &&
       ts[0].lo == kStrayBranch) {
     ctx.out.branches.emplace_back();
-    ctx.out.branches.back().manifold.emplace<BadManifold>(kDescribeThrows);
+    ctx.out.branches.back().manifold.emplace<BadManifold>(kTooManyDof);
   }
   return MatchResult::kNoMatch;
 }

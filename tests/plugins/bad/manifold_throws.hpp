@@ -11,7 +11,6 @@ enum Mode : int {
   kDescribeThrows,
   kClosedFormParamsThrows,
   kPoseWithTailThrows,
-  kCopyIntoThrows,
   kTooManyDof,              // dof() is 7: more parameters than a pose has room for
   kUnnamedParameter,        // parameter(0).name is null
   kNoManifold,              // the matcher appends a branch without a manifold
