@@ -170,7 +170,17 @@ int cmdSolve(const Args& a, const Registry& reg) {
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
   nlohmann::ordered_json result = resultTree(pb, sol, a.result);
-  if (a.collision && !addCollisionFields(a.positional[0], a, pb, sol, &result)) return kExitInvalid;
+  if (a.collision) {
+    try {
+      if (!addCollisionFields(a.positional[0], a, pb, sol, &result)) return kExitInvalid;
+    } catch (const std::exception& e) {
+      // The filter samples the branches: a plugin's manifold that throws there is an answer
+      // naming the plugin, not exit 1 (the writer guards itself the same way).
+      result = resultTree(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
+                          a.result);
+      result["collision_free_branches"] = 0;
+    }
+  }
   // Strings from the input (a default name from a file name holding 0xFF) may not be UTF-8:
   // replaced, where the default handler would throw.
   const std::string text =

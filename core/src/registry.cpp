@@ -10,6 +10,27 @@ bool ConstraintType::accepts_pair(FeatureKind f, FeatureKind m) const {
                      [&](const FeaturePair& p) { return p.fixed == f && p.mobile == m; });
 }
 
+// " (built-in)" or " (plugin PATH)": where an item that threw comes from.
+std::string originNote(const std::string& origin) {
+  return origin == "built-in" ? " (built-in)" : " (plugin " + origin + ")";
+}
+
+void ConstraintType::checkValues(const InputConstraint& c,
+                                 std::vector<std::string>& problems) const {
+  if (!check) return;
+  std::string what;
+  try {
+    check(c, problems);
+    return;
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+    what = "an exception that is not a std::exception";
+  }
+  problems.push_back("type: constraint type '" + name + "'" + originNote(origin) +
+                     " threw in its value check: " + what);
+}
+
 void Registry::checkOpen() const {
   if (frozen_) throw std::logic_error("relpos::Registry is frozen: register before solving");
 }
@@ -97,12 +118,23 @@ void Registry::clearOrigin() {
 namespace {
 struct LibraryNode {
   std::shared_ptr<const void> library, previous;
+  std::string path;
 };
 }  // namespace
 
 void Registry::keepLoaded(const std::string& path, std::shared_ptr<const void> library) {
   plugin_paths_.push_back(path);
-  libraries_ = std::make_shared<const LibraryNode>(LibraryNode{std::move(library), libraries_});
+  libraries_ =
+      std::make_shared<const LibraryNode>(LibraryNode{std::move(library), libraries_, path});
+}
+
+const char* Registry::libraryPath(const std::string& origin) const {
+  for (const void* n = libraries_.get(); n;) {
+    const auto* node = static_cast<const LibraryNode*>(n);
+    if (node->path == origin) return node->path.c_str();
+    n = node->previous.get();
+  }
+  return nullptr;
 }
 
 const ConstraintType* Registry::constraintType(const std::string& name) const {

@@ -194,8 +194,10 @@ json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
   return j;
 }
 
-void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
-                     std::string& out) {
+namespace {
+
+void writeLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
+               std::string& out) {
   Writer w(out);  // overwrites `out` from its start (keeping its size saves zero-filling it)
   w.raw("{");
   w.key("relpos");
@@ -273,6 +275,24 @@ void writeResultLine(const Problem& problem, const Solution& solution, const Res
   w.key("solve_us");
   w.number(solution.solve_us);
   w.raw("}}");
+}
+
+}  // namespace
+
+// Writing runs the branches' code (describe, the nearest-pose search, samples): a plugin's
+// manifold that throws there makes the line an `unhandled` one naming the plugin, not a lost line.
+void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
+                     std::string& out) {
+  std::string what;
+  try {
+    writeLine(problem, solution, opt, out);
+    return;
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+    what = "an exception that is not a std::exception";
+  }
+  writeLine(problem, unhandledAfterThrow(solution, "writing the result", what), opt, out);
 }
 
 json resultToJson(const Problem& problem, const Solution& solution, const ResultOptions& opt) {

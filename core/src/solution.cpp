@@ -55,6 +55,22 @@ void Solution::noteRule(const char* name) {
   rules.push_back(name);
 }
 
+Solution unhandledAfterThrow(const Solution& solution, const char* during,
+                             const std::string& what) {
+  std::string plugins;
+  for (const Branch& b : solution.branches)
+    if (b.origin && plugins.find(b.origin) == std::string::npos)
+      plugins += std::string(plugins.empty() ? "" : ", ") + b.origin;
+  Solution out;
+  out.status = Status::kUnhandled;
+  out.message = plugins.empty()
+                    ? std::string("internal error while ") + during + ": " + what
+                    : "a manifold of plugin " + plugins + " threw while " + during + ": " + what;
+  out.rules = solution.rules;
+  out.solve_us = solution.solve_us;
+  return out;
+}
+
 std::string Solution::briefReport() const {
   std::ostringstream os;
   os << toString(status) << ": " << branches.size() << " branch(es)";

@@ -55,6 +55,25 @@ void setUnhandled(SolveState& st, const std::string& why) {
   st.any_unhandled = true;
 }
 
+// Every call into registered code (a plugin's, or a built-in registered the same way) goes
+// through guarded(): an exception from it becomes the solve's `unhandled` reason, "ITEM (plugin
+// PATH) threw: WHAT", instead of unwinding through a batch worker or out of main. The try costs
+// nothing while nothing throws; `item` (which allocates) is only called when something did.
+template <typename Call, typename Item>
+bool guarded(SolveState& st, Call&& call, Item&& item) {
+  std::string what;
+  try {
+    call();
+    return true;
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+    what = "an exception that is not a std::exception";
+  }
+  setUnhandled(st, item() + " threw: " + what);
+  return false;
+}
+
 std::string describeSet(const ConstraintSet& set) {
   std::string s;
   auto list = [&s](const char* title, const auto& v) {
@@ -98,7 +117,10 @@ restart:
         const Fundamental& a = entry.swapped ? list[j] : list[i];
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();
-        rule.fn(a, b, st.tol, out);
+        if (!guarded(
+                st, [&] { rule.fn(a, b, st.tol, out); },
+                [&] { return "rule '" + rule.name + "'" + originNote(rule.origin); }))
+          return SetOutcome::kUnhandled;
         if (out.verdict == RuleVerdict::kNoChange) {
           pair_deferred = pair_deferred || out.deferred;
           continue;
@@ -186,9 +208,16 @@ void decomposeAll(const Problem& problem, SolveState& st) {
                            toString(c.mobile.kind) + " features");
       return;
     }
+    // Named for a message, built only when one is needed.
+    auto typeItem = [&](const char* call) {
+      return "constraint " + std::to_string(i) + ": the " + call + " of constraint type '" +
+             c.type + "'" + originNote(type->origin);
+    };
     if (type->check) {
       st.ws.problems.clear();
-      type->check(c, st.ws.problems);
+      if (!guarded(
+              st, [&] { type->check(c, st.ws.problems); }, [&] { return typeItem("value check"); }))
+        return;
       if (!st.ws.problems.empty()) {
         setUnhandled(st, "constraint " + std::to_string(i) + " is invalid: " + st.ws.problems[0]);
         return;
@@ -197,7 +226,10 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     dec.alternatives.clear();
     dec.unhandled = nullptr;
     Feature fixed_W = c.fixed.placed(problem.fixed.pose);
-    type->decompose(c, fixed_W, SourceMask{1} << i, dec);
+    if (!guarded(
+            st, [&] { type->decompose(c, fixed_W, SourceMask{1} << i, dec); },
+            [&] { return typeItem("decomposition"); }))
+      return;
     if (dec.unhandled) {
       setUnhandled(st, "constraint " + std::to_string(i) + " (" + c.type + " " +
                            toString(c.fixed.kind) + "-" + toString(c.mobile.kind) +
@@ -240,6 +272,61 @@ bool allRevolved(const Solution& solution, std::size_t first) {
   return true;
 }
 
+// What would make a branch unusable without any exception to catch later: no manifold, no type
+// name, more parameters than a pose has room for (Params: kMaxDof), a parameter without a name
+// (the writer copies them). `call` names the method running, should one of them throw. These are
+// the cheap calls; the ones that compute (pose, project, describe, ...) cost about as much as
+// the whole solve again, so what they throw is caught where they are called (the result writer,
+// `solve --collision`), still naming the plugin through Branch::origin.
+std::string unusable(const ManifoldHolder& holder, const char*& type, const char*& call) {
+  if (!holder) return "a branch without a manifold";
+  const Manifold& m = *holder;
+  call = "typeName()";
+  type = m.typeName();
+  if (!type) return "typeName() is null";
+  call = "dof()";
+  const int dof = m.dof();
+  if (dof < 0 || dof > kMaxDof)
+    return "dof() is " + std::to_string(dof) + ", outside 0.." + std::to_string(kMaxDof);
+  call = "rotationalDof()";
+  (void)m.rotationalDof();
+  call = "translationalDof()";
+  (void)m.translationalDof();
+  call = "parameter(i)";
+  for (int i = 0; i < dof; ++i)
+    if (!m.parameter(i).name) return "parameter(" + std::to_string(i) + ") has no name";
+  return "";
+}
+
+// A plugin's branches are checked here, under the guard, before anything else uses them: a
+// manifold that would overrun the writer, or whose cheap methods throw, is an `unhandled` answer
+// naming the plugin. Each branch also records its plugin (Branch::origin), for what its other
+// methods throw later. Built-in matchers' branches are left alone.
+bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t first) {
+  if (matcher.origin == "built-in") return true;
+  const char* origin = st.registry.libraryPath(matcher.origin);
+  for (std::size_t b = first; b < st.solution.branches.size(); ++b) {
+    Branch& branch = st.solution.branches[b];
+    branch.origin = origin;
+    const char* type = "?";
+    const char* call = "";
+    std::string problem;
+    auto item = [&](bool in_call) {
+      return std::string(in_call ? call : "") + (in_call ? " of " : "") + "manifold '" + type +
+             "' from matcher '" + matcher.name + "'" + originNote(matcher.origin);
+    };
+    if (!guarded(
+            st, [&] { problem = unusable(branch.manifold, type, call); },
+            [&] { return item(true); }))
+      return false;
+    if (!problem.empty()) {
+      setUnhandled(st, item(false) + " is unusable: " + problem);
+      return false;
+    }
+  }
+  return true;
+}
+
 void listBits(SourceMask m, std::vector<int>& out) {
   for (int k = 0; k < 64; ++k)
     if (m >> k & 1) out.push_back(k);
@@ -279,13 +366,20 @@ void runPending(SolveState& st) {
     MatchResult r = MatchResult::kNoMatch;
     for (const MatcherInfo& m : st.registry.matchers()) {
       MatchContext ctx{set, st.tol, solution, &deferSet, &st};
-      r = m.fn(ctx);
+      const std::size_t had = solution.branches.size();
+      if (!guarded(
+              st, [&] { r = m.fn(ctx); },
+              [&] { return "matcher '" + m.name + "'" + originNote(m.origin); }))
+        break;
+      // Whatever it answered: a branch left behind by a matcher that passed is used all the same.
+      if (solution.branches.size() > had && !checkPluginBranches(st, m, had)) break;
       if (r == MatchResult::kInconsistent) {
         st.conflicts |= ctx.conflict;
         st.conflict_reason = ctx.reason;
       }
       if (r != MatchResult::kNoMatch) break;
     }
+    if (st.any_unhandled) break;  // a matcher threw, or made an unusable branch
     if (r == MatchResult::kNoMatch) {
       setUnhandled(st, "no solution manifold matches the combined constraints:" + describeSet(set));
       break;

@@ -417,19 +417,6 @@ class Parser {
         out_.errors[i].message += " (constraint id '" + detail::escapeForMessage(c->id) + "')";
   }
 
-  // A constraint type's own value check (plugin code: an exception is a problem of this spec).
-  void typeCheck(const ConstraintType& type, const InputConstraint& c,
-                 std::vector<std::string>& problems) {
-    try {
-      type.check(c, problems);
-    } catch (const std::exception& e) {
-      problems.push_back(std::string("the check of constraint type '") + type.name +
-                         "' failed: " + e.what());
-    } catch (...) {
-      problems.push_back("the check of constraint type '" + type.name + "' failed");
-    }
-  }
-
   void constraintFields(const Json& j, const Path& path, const Problem& pb, InputConstraint* c,
                         bool* ok_out) {
     *ok_out = false;
@@ -555,7 +542,7 @@ class Parser {
     }
     if (ok && vals_ok && type && type->check) {
       std::vector<std::string> problems;
-      typeCheck(*type, *c, problems);
+      type->checkValues(*c, problems);  // what a plugin's check throws is one more problem
       for (const auto& p : problems) {
         // "field: message" -> path.field: message
         auto colon = p.find(": ");

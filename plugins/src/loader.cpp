@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "elf_check.hpp"
 #include "relpos/core/plugin_api.hpp"
 
 #ifndef BOOST_DLL_USE_STD_FS
@@ -20,6 +21,10 @@ namespace dll = boost::dll;
 
 namespace {
 
+// Every symbol resolved at load: a plugin calling a function nothing defines is refused by
+// dlopen with the symbol's name, instead of killing the process at its first call (lazy binding).
+constexpr int kLoadMode = RTLD_NOW | RTLD_LOCAL;
+
 std::string canonical(const std::string& path) {
   std::error_code ec;
   fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
@@ -32,14 +37,26 @@ bool fail(const std::string& path, const std::string& why, std::string* error) {
 }
 
 // Boost.DLL reports a generic error code; dlerror() says what the dynamic loader found wrong
-// (not ELF, wrong architecture, a missing dependency, an undefined symbol).
+// (a missing dependency, an undefined symbol), after the path we already name.
 std::string whyNotLoadable(const std::string& path, const dll::fs::error_code& ec) {
-  if (void* h = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
+  if (void* h = dlopen(path.c_str(), kLoadMode)) {
     dlclose(h);
     return ec.message();
   }
   const char* why = dlerror();
-  return why ? why : ec.message();
+  if (!why) return ec.message();
+  const std::string text = why;
+  return text.rfind(path + ": ", 0) == 0 ? text.substr(path.size() + 2) : text;
+}
+
+// What is at `path` when it is not a regular file, or "".
+std::string notAFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (st.type() == fs::file_type::regular) return "";
+  if (st.type() == fs::file_type::directory) return "a directory, not a plugin file";
+  if (ec || st.type() == fs::file_type::not_found) return "no such plugin file";
+  return "not a regular file";
 }
 
 std::string abiText(long abi) {
@@ -55,21 +72,27 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
   if (std::find(loaded.begin(), loaded.end(), id) != loaded.end()) return true;
   if (registry.frozen())
     return fail(path, "the registry is frozen: load plugins before solving", error);
-  std::error_code exists_ec;
-  if (!fs::is_regular_file(id, exists_ec)) return fail(path, "no such plugin file", error);
+  if (const std::string why = notAFile(id); !why.empty()) return fail(path, why, error);
+  // dlopen maps what the headers say: checked first, a truncated file is a message, not SIGBUS.
+  if (const std::string why = elfProblem(id); !why.empty())
+    return fail(path, "not a loadable plugin (" + why + ")", error);
 
   auto lib = std::make_shared<dll::shared_library>();
   dll::fs::error_code ec;
-  lib->load(id, dll::load_mode::rtld_lazy | dll::load_mode::rtld_local, ec);
+  lib->load(id, dll::load_mode::rtld_now | dll::load_mode::rtld_local, ec);
   if (ec || !lib->is_loaded())
-    return fail(path, "not a shared library that can be loaded (" + whyNotLoadable(id, ec) + ")",
-                error);
+    return fail(path, "not a loadable plugin (" + whyNotLoadable(id, ec) + ")", error);
   if (!lib->has("relpos_plugin_abi") || !lib->has("relpos_register_plugin"))
     return fail(path,
                 "not a relpos plugin: it does not export relpos_plugin_abi and "
                 "relpos_register_plugin (end a source file with RELPOS_PLUGIN(...))",
                 error);
-  const long abi = lib->get_alias<PluginAbiFn>("relpos_plugin_abi")();
+  long abi = 0;
+  try {
+    abi = lib->get_alias<PluginAbiFn>("relpos_plugin_abi")();
+  } catch (...) {  // not one RELPOS_PLUGIN made: its ABI query is noexcept
+    return fail(path, "not a relpos plugin: its relpos_plugin_abi threw", error);
+  }
   if (abi != pluginAbi())
     return fail(path,
                 "built for relpos plugin ABI " + abiText(abi) + ", this relpos has " +

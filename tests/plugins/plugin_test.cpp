@@ -2,12 +2,17 @@
 // and random known-pose problems, pass the same conformance kits as the built-ins, outlive their
 // registry inside solutions; bad plugins are refused with one clear line and the registry left
 // untouched.
+#include <elf.h>
 #include <gtest/gtest.h>
+#include <link.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iterator>
+#include <stdexcept>
 
 #include "evaluator.hpp"
 #include "expected_results.hpp"
@@ -222,11 +227,117 @@ void expectRefused(const std::string& path, const std::string& expected) {
 TEST(BadPlugins, AFileThatIsNotALibrary) {
   const std::string path = ::testing::TempDir() + "not-a-library.so";
   std::ofstream(path) << "this is text, not ELF\n";
-  expectRefused(path, "not a shared library that can be loaded");
+  expectRefused(path, "not a loadable plugin (not an ELF file");
 }
 
 TEST(BadPlugins, AMissingFile) {
   expectRefused(::testing::TempDir() + "no-such-plugin.so", "no such plugin file");
+}
+
+TEST(BadPlugins, AnEmptyFile) {
+  const std::string path = ::testing::TempDir() + "empty-plugin.so";
+  std::ofstream{path};
+  expectRefused(path, "not a loadable plugin (an empty file)");
+}
+
+TEST(BadPlugins, ADirectory) {
+  const std::string path = ::testing::TempDir() + "a-directory.so";
+  fs::create_directories(path);
+  expectRefused(path, "a directory, not a plugin file");
+}
+
+// A copy of a real plugin with `edit` applied to its bytes, in the test's temp dir.
+std::string editedPlugin(const std::string& name, const std::function<void(std::string&)>& edit) {
+  std::ifstream in(kHelical, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  edit(bytes);
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return path;
+}
+
+ElfW(Ehdr) & header(std::string& bytes) { return *reinterpret_cast<ElfW(Ehdr)*>(&bytes[0]); }
+
+// dlopen maps the segments the headers name: a file cut short would be a SIGBUS inside dlopen
+// (this whole test binary dying) when the check did not come first.
+TEST(BadPlugins, ATruncatedLibraryIsRefusedBeforeDlopen) {
+  const std::string cut = editedPlugin("truncated-2000.so", [](std::string& b) { b.resize(2000); });
+  expectRefused(cut, "not a loadable plugin (truncated: segment ");
+  Registry r;
+  std::string error;
+  EXPECT_FALSE(plugins::loadPlugin(cut, r, &error));
+  EXPECT_NE(error.find(" of a 2000-byte file)"), std::string::npos) << error;
+
+  // Every cut: inside the ELF header, the program headers, the segments, the section headers.
+  const auto full = static_cast<std::size_t>(fs::file_size(kHelical));
+  for (std::size_t size : {std::size_t{3}, std::size_t{40}, std::size_t{63}, std::size_t{100},
+                           std::size_t{300}, full / 4, full / 2, full - 100, full - 1}) {
+    SCOPED_TRACE("cut to " + std::to_string(size) + " of " + std::to_string(full) + " bytes");
+    const std::string path = editedPlugin("truncated.so", [&](std::string& b) { b.resize(size); });
+    expectRefused(path, size < 4 ? "not an ELF file" : "truncated: ");
+  }
+}
+
+TEST(BadPlugins, AnElfFileThisHostCannotRun) {
+  const struct {
+    const char* name;
+    std::function<void(std::string&)> edit;
+    const char* expected;
+  } cases[] = {
+      {"elf32.so", [](std::string& b) { header(b).e_ident[EI_CLASS] = ELFCLASS32; },
+       "a 32-bit ELF file; this relpos is 64-bit"},
+      {"big-endian.so",
+       [](std::string& b) {
+         header(b).e_ident[EI_DATA] =
+             header(b).e_ident[EI_DATA] == ELFDATA2LSB ? ELFDATA2MSB : ELFDATA2LSB;
+       },
+       __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+           ? "a big-endian ELF file; this host is little-endian"
+           : "a little-endian ELF file; this host is big-endian"},
+      {"other-machine.so",
+       [](std::string& b) {
+         header(b).e_machine = header(b).e_machine == EM_AARCH64 ? EM_X86_64 : EM_AARCH64;
+       },
+       "built for another machine ("},
+      {"executable.so", [](std::string& b) { header(b).e_type = ET_EXEC; },
+       "an executable, not a shared library"},
+      {"object.so", [](std::string& b) { header(b).e_type = ET_REL; },
+       "an object file (.o), not a shared library"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    expectRefused(editedPlugin(c.name, c.edit),
+                  std::string("not a loadable plugin (") + c.expected);
+  }
+}
+
+// Headers that point outside the file, whatever their size (no overflow in the check).
+TEST(BadPlugins, HeadersPointingPastTheEndOfTheFile) {
+  auto firstLoad = [](std::string& b) -> ElfW(Phdr) & {
+    auto* ph = reinterpret_cast<ElfW(Phdr)*>(&b[header(b).e_phoff]);
+    for (int i = 0; i < header(b).e_phnum; ++i)
+      if (ph[i].p_type == PT_LOAD) return ph[i];
+    throw std::runtime_error("no PT_LOAD");
+  };
+  expectRefused(
+      editedPlugin("far-segment.so", [&](std::string& b) { firstLoad(b).p_offset = ~0ull - 8; }),
+      "ends at byte 18446744073709551615 of a ");
+  expectRefused(
+      editedPlugin("long-segment.so", [&](std::string& b) { firstLoad(b).p_filesz = ~0ull; }),
+      "truncated: segment ");
+  expectRefused(editedPlugin("far-program-headers.so",
+                             [](std::string& b) { header(b).e_phoff = 1ull << 40; }),
+                "truncated: the program header table ends at byte ");
+  expectRefused(
+      editedPlugin("far-section-headers.so", [](std::string& b) { header(b).e_shoff = b.size(); }),
+      "truncated: the section header table ends at byte ");
+}
+
+// Bound lazily, the missing function would only be looked up at its first call, inside
+// registration, and the dynamic loader would end the process (exit 127).
+TEST(BadPlugins, AnUnresolvedSymbolIsRefusedAtLoad) {
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-unresolved-symbol.so",
+                "not a loadable plugin (undefined symbol: relpos_test_function_nothing_defines");
 }
 
 TEST(BadPlugins, ALibraryWithoutTheEntryPoint) {

@@ -8,12 +8,16 @@
 //
 // which exports two Boost.DLL aliases: `relpos_plugin_abi` (checked by the loader before anything
 // else) and `relpos_register_plugin` (the entry point). No exception crosses the boundary: the
-// entry point catches whatever registration throws and hands the loader its message.
+// entry point catches whatever registration throws (even while copying its message) and hands
+// the loader the message. Later calls into the plugin's items (checks, decompositions, rules,
+// matchers, its manifolds' methods) are guarded by relpos itself: what they throw becomes an
+// `unhandled` answer naming the plugin.
 #include <exception>
 #include <string>
 
 #include "relpos/core/manifold.hpp"
 #include "relpos/core/registry.hpp"
+#include "relpos/core/solution.hpp"
 
 #ifndef BOOST_DLL_USE_STD_FS
 #define BOOST_DLL_USE_STD_FS
@@ -25,7 +29,7 @@ namespace relpos {
 // Bumped whenever a type a plugin shares with relpos changes incompatibly (2: Manifold gained
 // the virtual closedFormParams/poseWithTail, which moves every later vtable slot; 3: the built-in
 // SeparableManifold and RadialGraspManifold a plugin may build gained members; 4: Manifold gained
-// the virtual rebase).
+// the virtual rebase, and Branch, which a plugin's matcher appends, its origin).
 inline constexpr long kPluginAbiVersion = 4;
 
 // The version with a fingerprint of the shared layouts folded in, so a plugin built against other
@@ -34,7 +38,7 @@ constexpr long pluginAbi() {
   return kPluginAbiVersion * 1000000L +
          static_cast<long>((sizeof(Fundamental) * 131 + sizeof(ConstraintSet) * 31 +
                             sizeof(RuleOutput) * 7 + sizeof(Decomposition) * 3 + kManifoldStorage +
-                            sizeof(MatchContext)) %
+                            sizeof(MatchContext) + sizeof(Branch) * 11) %
                            1000000);
 }
 
@@ -46,16 +50,20 @@ using PluginRegisterFn = const char*(Registry&);
 
 #define RELPOS_PLUGIN(register_function)                                  \
   namespace relpos_plugin_entry {                                         \
-  inline long abi() { return ::relpos::pluginAbi(); }                     \
+  inline long abi() noexcept { return ::relpos::pluginAbi(); }            \
   inline const char* registerAll(::relpos::Registry& registry) noexcept { \
     static std::string error;                                             \
     try {                                                                 \
       register_function(registry);                                        \
       return nullptr;                                                     \
     } catch (const std::exception& e) {                                   \
-      error = e.what();                                                   \
+      try {                                                               \
+        error = e.what();                                                 \
+      } catch (...) {                                                     \
+        return "an exception whose message could not be copied";          \
+      }                                                                   \
     } catch (...) {                                                       \
-      error = "an exception that is not a std::exception";                \
+      return "an exception that is not a std::exception";                 \
     }                                                                     \
     return error.c_str();                                                 \
   }                                                                       \

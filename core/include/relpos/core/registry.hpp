@@ -16,6 +16,9 @@ namespace relpos {
 
 struct Solution;
 
+// " (built-in)" or " (plugin PATH)": where an item comes from, for a message about it.
+std::string originNote(const std::string& origin);
+
 // --- constraint types -------------------------------------------------------------------------
 inline constexpr std::size_t kMaxDecompositionAlternatives = 2;
 struct Decomposition {
@@ -56,6 +59,10 @@ struct ConstraintType {
   ViolationFn violation = nullptr;
   std::string origin = "built-in";
   bool accepts_pair(FeatureKind f, FeatureKind m) const;
+  // Runs `check` (when set) on c: an exception from it (plugin code) becomes one more problem,
+  // "type: constraint type 'NAME' (plugin PATH) threw in its value check: WHAT", not an unwind
+  // through the caller.
+  void checkValues(const InputConstraint& c, std::vector<std::string>& problems) const;
 };
 
 // --- rules -------------------------------------------------------------------------------------
@@ -143,6 +150,10 @@ class Registry {
   // it (their manifolds' code may live in the library).
   void keepLoaded(const std::string& path, std::shared_ptr<const void> library);
   const std::shared_ptr<const void>& loadedLibraries() const { return libraries_; }
+  // The path of the loaded library `origin` names, as a string that lives as long as
+  // loadedLibraries() does (so a Solution's branches can name their plugin after the registry is
+  // gone); nullptr for built-in items and for an origin no library was kept for.
+  const char* libraryPath(const std::string& origin) const;
   const std::vector<std::string>& pluginPaths() const { return plugin_paths_; }
   bool frozen() const { return frozen_; }
 

@@ -17,6 +17,10 @@ const char* toString(Status s);
 struct Branch {
   ManifoldHolder manifold;
   SourceMask sources = 0;  // input constraints that shaped this branch
+  // The plugin whose matcher made this branch (its path, which lives as long as
+  // Solution::libraries), so that an exception its manifold throws later names it; nullptr for
+  // a built-in matcher's branch.
+  const char* origin = nullptr;
 };
 
 struct Solution {
@@ -36,5 +40,11 @@ struct Solution {
   void noteRule(const char* name);
   std::string briefReport() const;
 };
+
+// `solution` answered `unhandled` instead, because code its branches run threw `what` while
+// `during` (e.g. "writing the result"): the message names the plugins the branches come from.
+// No branch is kept, so none of their code runs again; the rules that fired and the solve time
+// are.
+Solution unhandledAfterThrow(const Solution& solution, const char* during, const std::string& what);
 
 }  // namespace relpos
