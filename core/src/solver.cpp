@@ -444,8 +444,14 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   tol = st.tol;
   runPending(st);
   if (!frame.centred || (frame.offset_W.isZero(0.0) && frame.offset_M.isZero(0.0))) return true;
-  for (Branch& b : solution.branches)
-    if (!b.manifold.get()->rebase(frame.offset_W, frame.offset_M)) return false;
+  for (Branch& b : solution.branches) {
+    bool moved = false;
+    try {  // a plugin's manifold that throws is solved uncentred (and checked there)
+      moved = b.manifold.get()->rebase(frame.offset_W, frame.offset_M);
+    } catch (...) {
+    }
+    if (!moved) return false;
+  }
   return true;
 }
 
@@ -469,8 +475,15 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
     checks.push_back({registry.constraintType(c.type), c.fixed.placed(problem.fixed.pose)});
   for (std::size_t b = 0; b < solution.branches.size(); ++b) {
     const Manifold& m = *solution.branches[b].manifold;
-    const Params theta = referenceParams(m);  // a NaN bound makes a NaN parameter
-    const Isometry3d X = m.pose(theta);
+    Isometry3d X;
+    Params theta;
+    try {  // a plugin's manifold may throw: the answer then names it
+      theta = referenceParams(m);  // a NaN bound makes a NaN parameter
+      X = m.pose(theta);
+    } catch (const std::exception& e) {
+      solution = unhandledAfterThrow(solution, "checking its branches", e.what());
+      return;
+    }
     bool finite = X.matrix().allFinite();
     for (int i = 0; i < kMaxDof; ++i) finite = finite && !std::isnan(theta[i]);
     double worst = finite ? 0.0 : std::numeric_limits<double>::infinity();
