@@ -56,7 +56,8 @@ struct Problem {
   Problem& addConstraint(const std::string& type, const std::string& fixed_feature,
                          const std::string& mobile_feature, double value = 0.0,
                          Orientation orientation = Orientation::kAligned);
-  // Largest coordinate magnitude: the length scale for tolerances.
+  // Largest coordinate magnitude (the solver measures its tolerance on the centred constraint
+  // geometry instead: core/src/centring.hpp).
   double lengthScale() const;
 };
 

@@ -17,8 +17,10 @@ struct SolverOptions {
   int max_branches = 64;     // more alternatives than this -> unhandled
   int max_rule_steps = 256;  // rewrite steps per constraint set before giving up (unhandled)
   // Every rule condition ("parallel", "d_a = d_b", "on the line") is decided within these:
-  // lengths relative to the problem's size (its largest coordinate, at least 1), angles in
-  // radians. Loosen them for data with few significant digits (e.g. 1e-6 for CAD exports).
+  // lengths relative to the problem's size (the diagonal of its constrained features' box, or a
+  // longer length value; never below the rounding of its largest coordinate), angles in radians
+  // (docs/spec-additions.md, "Tolerances and numerical soundness"). Loosen them for data with few
+  // significant digits (e.g. 1e-6 for CAD exports).
   double length_tolerance = 1e-9;
   double angle_tolerance = 1e-9;
   bool isValid(std::string* why) const;

@@ -19,6 +19,8 @@ struct Tolerance {
     return !(amplification <= max_amplification);
   }
 
+  // For code that combines constraint sets itself (the rule and plugin test kits). The solver
+  // measures the problem's own size instead (core/src/centring.hpp).
   static Tolerance forScale(double scale, double relative_length = 1e-9, double angle = 1e-9) {
     Tolerance t;
     t.length = relative_length * (scale > 1.0 ? scale : 1.0);
