@@ -69,7 +69,7 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle) 
   t.angle = angle;
   // Rounding magnified a thousandfold is still ~1e-13 of the size, far below the tolerance; more
   // waits for the pairs that decide better (solver.cpp).
-  t.max_amplification = 1e3;
+  t.max_amplification = kConditioningBound;
   return t;
 }
 

@@ -187,6 +187,21 @@ restart:
   return SetOutcome::kCombined;
 }
 
+// Combines one list in two rounds: first with the conditioning bound, so that the pairs that
+// decide well go first; then, if a pair waited (RuleOutput::defer) and is still there, without
+// it, to decide what only it can.
+SetOutcome combineInRounds(SolveState& st, std::size_t set_index, bool translational, int& steps) {
+  st.deferred = false;
+  SetOutcome o = combineList(st, set_index, translational, steps);
+  if (o == SetOutcome::kCombined && st.deferred) {
+    const Tolerance bounded = st.tol;
+    st.tol.max_amplification = Tolerance().max_amplification;
+    o = combineList(st, set_index, translational, steps);
+    st.tol = bounded;
+  }
+  return o;
+}
+
 void decomposeAll(const Problem& problem, SolveState& st) {
   auto& pending = st.ws.pending;
   pending.clear();
@@ -349,16 +364,8 @@ void runPending(SolveState& st) {
       break;
     }
     int steps = 0;
-    st.deferred = false;
-    SetOutcome o = combineList(st, s, true, steps);
-    if (o == SetOutcome::kCombined && st.deferred) {
-      // What waited for better-conditioned pairs and is still there: decide it now.
-      const Tolerance bounded = st.tol;
-      st.tol.max_amplification = Tolerance().max_amplification;
-      o = combineList(st, s, true, steps);
-      st.tol = bounded;
-    }
-    if (o == SetOutcome::kCombined) o = combineList(st, s, false, steps);
+    SetOutcome o = combineInRounds(st, s, true, steps);
+    if (o == SetOutcome::kCombined) o = combineInRounds(st, s, false, steps);
     if (o == SetOutcome::kUnhandled) break;
     if (o == SetOutcome::kInconsistent) continue;
     const ConstraintSet& set = ws.pending[s];

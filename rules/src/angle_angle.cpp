@@ -13,8 +13,10 @@ using namespace detail;
 
 // App. II: unit vectors at angle a from u and b from v (u, v independent unit vectors).
 // Returns how many (0, 1 or 2). `*err`: how far they may be from the exact ones when the angles
-// and vectors are known to `in_err` (a first-order bound; a square root where the cones touch);
-// `*gain`: how much the axes' closeness magnifies in_err in it (1 + 2 / sin of their angle).
+// and vectors are known to `in_err` — and never better than their own rounding (kInputRounding),
+// which nearly parallel axes magnify like any other uncertainty (a first-order bound; a square
+// root where the cones touch); `*gain`: how much the axes' closeness magnifies it (1 + 2 / sin of
+// their angle).
 int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const Tolerance& tol,
                double in_err, Vector3d s[2], double* err, double* gain) {
   // In the basis (u, v_u, w): s = cos a u + c_φ v_u ± c_t w with s·v = cos b. Near parallel axes
@@ -34,8 +36,8 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
   // The position across the cones' common plane (cphi) moves by e; their height above it (ct) by
   // e / ct, or by sqrt(2 e) where they barely meet.
   *gain = 1.0 + 2.0 / ss;
-  const double e = in_err * *gain;
-  *err = in_err > 0.0 ? e + std::min(e / std::sqrt(std::max(ct2, 0.0)), std::sqrt(2.0 * e)) : 0.0;
+  const double e = (in_err + kInputRounding) * *gain;
+  *err = e + std::min(e / std::sqrt(std::max(ct2, 0.0)), std::sqrt(2.0 * e));
   if (ct2 < -4 * (tol.angle + e)) return 0;
   const Vector3d base = std::cos(a) * u + cphi * vu;
   if (ct2 <= 4 * tol.angle * tol.angle + 1e-14) {
@@ -50,13 +52,24 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
 
 enum Case { kIncompatible, kSameVector, kTwoCones, kParallelFixes, kParallelAndAngle };
 
-// Whether the directions s± are known well enough to replace the cones by: where the cones' axes
-// are nearly parallel, their meeting moves by far more than the vectors' own uncertainty (gain:
-// 1/sin of the axes' angle), and a parallelism that uncertain would let later comparisons wave
-// real differences through. The pair is then left to the two-angle rotation (App. III-D). (The
-// square root where the cones barely meet is no gain of rounding but the geometry's own.)
-bool wellConditioned(double gain, double in_err, const Tolerance& given) {
-  return in_err == 0.0 || !given.tooIllConditioned(gain);
+// Whether the directions s± are known well enough to replace the cones by. Where the cones' axes
+// are nearly parallel, their meeting moves by far more than the inputs' uncertainty (gain: 1/sin
+// of the axes' angle): even given vectors, exact but for rounding, then meet where the rounding
+// puts them, 1e-9 rad off at axes 1e-7 apart. Such a pair waits (RuleOutput::defer) for the
+// pairs of its set that decide better (another parallelism makes the same vector's cone meet
+// one of them at a good angle); alone, it is computed in the unbounded round, carrying its err.
+// Derived inputs (err > 0) are refused in every round: a parallelism that uncertain would let
+// later comparisons wave real differences through (the pair is left to the matchers). (The square
+// root where the cones barely meet is no gain of rounding but the geometry's own.)
+enum class Conditioning { kGood, kDefer, kRefuse };
+Conditioning conditioning(double gain, double in_err, const Tolerance& given) {
+  if (in_err > 0.0 && !(gain <= kConditioningBound)) return Conditioning::kRefuse;
+  return given.tooIllConditioned(gain) ? Conditioning::kDefer : Conditioning::kGood;
+}
+// Applies a verdict of conditioning(); true when the rule may go on.
+bool proceed(Conditioning c, RuleOutput& out) {
+  if (c == Conditioning::kDefer) out.defer();
+  return c == Conditioning::kGood;
 }
 
 struct Ang {
@@ -77,16 +90,25 @@ Ang snap(const Fundamental& x, const Tolerance& given) {
   return r;
 }
 
+// An angle of 0 or π (after snap() and the flips below, which turn 0 into π).
+bool isParallelism(const Ang& x) { return x.a == 0 || x.a == kPi; }
+
 void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& given,
                RuleOutput& out) {
   Ang a = snap(fa, given), b = snap(fb, given);
   // Every comparison allows for how far derived or snapped vectors may be from the exact ones.
-  const double in_err = a.err + b.err;
-  const Tolerance tol = given.widened(in_err);
+  double in_err = a.err + b.err;
+  Tolerance tol = given.widened(in_err);
   // Same mobile vector (σ_m = 0 or π): one vector at α from u_f and β from v_f.
   double sm = angleBetween(a.m, b.m);
-  if (sm >= kPi - tol.angle) b.m = -b.m, b.a = kPi - b.a, sm = 0;
+  if (sm >= kPi - tol.angle) b.m = -b.m, b.a = kPi - b.a, sm = kPi - sm;
   if (sm <= tol.angle) {
+    // Taking b's mobile vector for a's moves b by σ_m: that joins its uncertainty, as a snap to a
+    // parallelism does, or two parallelisms on vectors 1e-9 apart would be compared with fixed
+    // vectors 1.01e-9 apart within 1e-9 (and found different, or met by a vector between them
+    // that is neither).
+    b.m = a.m, b.err += sm, in_err += sm;
+    tol = given.widened(in_err);
     double sf = angleBetween(a.f, b.f);
     if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = 0;
     if (sf <= tol.angle) {
@@ -100,13 +122,30 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
               "one direction at two different angles from the same direction (PMF App. IV Table "
               "X)");
     }
+    // A parallelism gives the direction itself, which makes the other angle or not. (As a cone
+    // of half-angle 0 it would meet the other cone only by the tolerance on a square, ~1e-5 rad:
+    // a direction that keeps neither.)
+    if (isParallelism(a) || isParallelism(b)) {
+      const bool pa = isParallelism(a);
+      const Ang& par = pa ? a : b;
+      const Ang& other = pa ? b : a;
+      const Vector3d dir = par.a == 0 ? par.f : Vector3d(-par.f);
+      if (tol.equalAngle(angleBetween(dir, other.f), other.a)) {
+        out.fire(kParallelFixes);
+        return pa ? out.redundantSecond() : out.redundantFirst();
+      }
+      return out.fire(kIncompatible)
+          .incompatible(
+              "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
+              "Table X)");
+    }
     Vector3d s[2];
     double err = 0.0, gain = 1.0;
     const int n = sPlusMinus(a.f, b.f, a.a, b.a, given, in_err, s, &err, &gain);
     if (n == 0)
       return out.fire(kIncompatible)
           .incompatible("no direction makes both angles (PMF App. IV Table X, row 1)");
-    if (!wellConditioned(gain, in_err, given)) return;
+    if (!proceed(conditioning(gain, in_err, given), out)) return;
     out.fire(kTwoCones);
     for (int k = 0; k < n; ++k) one(out, withErr(Fundamental::angle(a.m, s[k], 0.0, 0), err));
     return;
@@ -147,7 +186,7 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
         .incompatible(
             "a parallelism and an angle that no rotation satisfies together (PMF App. IV Table X, "
             "row 1)");
-  if (!wellConditioned(gain, in_err, given)) return;
+  if (!proceed(conditioning(gain, in_err, given), out)) return;
   out.fire(kParallelAndAngle);
   for (int k = 0; k < n; ++k) {
     Alt& alt = out.addAlternative();

@@ -44,7 +44,7 @@ Vector3d perpendicularPart(const Vector3d& v, const Vector3d& u);
 Vector3d pointWherePlanesMeet(const Vector3d& a, const Vector3d& n_a, const Vector3d& b,
                               const Vector3d& n_b);
 
-// Angle between unit vectors, robust near 0 and pi.
+// Angle between unit vectors, to full relative precision near 0 and pi.
 double angleBetween(const Vector3d& a, const Vector3d& b);
 
 // Geodesic angle between two rotations.

@@ -5,6 +5,15 @@
 
 namespace relpos {
 
+// The first combination round's bound on Tolerance::max_amplification (centring.cpp
+// toleranceFor). Rules that refuse, rather than defer, an output whose inputs already carry an
+// uncertainty (Fundamental::err) refuse it beyond this gain in every round.
+inline constexpr double kConditioningBound = 1e3;
+// The rounding a given vector or value carries relative to the problem as meant (half an ulp per
+// coordinate, a few more from placing features by a pose and normalising): what an
+// ill-conditioned construction magnifies even when no rule derived its inputs (err = 0).
+inline constexpr double kInputRounding = 16 * 2.220446049250313e-16;
+
 struct Tolerance {
   double length = 1e-9;  // absolute length tolerance, already scaled
   double angle = 1e-9;   // radians
