@@ -484,7 +484,7 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
     const Manifold& m = *solution.branches[b].manifold;
     Isometry3d X;
     Params theta;
-    try {  // a plugin's manifold may throw: the answer then names it
+    try {                          // a plugin's manifold may throw: the answer then names it
       theta = referenceParams(m);  // a NaN bound makes a NaN parameter
       X = m.pose(theta);
     } catch (const std::exception& e) {

@@ -55,10 +55,20 @@ MatchResult inconsistent(MatchContext& ctx, SourceMask m, const char* why) {
 // uncertain). The rotation meets the better known one exactly and leaves the mismatch to the
 // other: a parallelism derived from a short span can turn by far more than one from a long span
 // before a point moves by the length tolerance.
+// Whether two parallelisms on mobile vectors whose cross product has norm `s` fix the rotation
+// well enough to build on. The turn about the first vector is read off the second's part across
+// it, so it is known only to (the vectors' uncertainty and rounding) / s: at s = 1e-7 rounding
+// alone turns it by 3e-8 rad, and every point a unit away by 30 length tolerances, enough to call
+// a feasible problem inconsistent once the rotation is taken as known. Beyond the gain the rules
+// accept (kConditioningBound) the pair is left alone, and the set unhandled unless another pair or
+// matcher decides it.
+bool fixesRotationWell(double s) { return 1.0 <= s * kConditioningBound; }
+
 MatchResult twoParallels(MatchContext& ctx, const Angle& a0, const Angle& b0,
                          RotationAlternatives& out) {
   const Tolerance tol = ctx.tol.widened(a0.err + b0.err);
-  if (a0.u_m.cross(b0.u_m).norm() <= tol.angle) return MatchResult::kNoMatch;
+  const double s = a0.u_m.cross(b0.u_m).norm();
+  if (s <= tol.angle || !fixesRotationWell(s)) return MatchResult::kNoMatch;
   if (!tol.equalAngle(angleBetween(a0.u_m, b0.u_m), angleBetween(a0.u_f, b0.u_f)))
     return inconsistent(ctx, a0.sources | b0.sources,
                         "two parallelisms whose mobile and fixed vectors form different angles");
@@ -244,7 +254,7 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
     for (int j = i + 1; j < n; ++j) {
       if (!ang[j].parallel) continue;
       const double s = ang[i].u_m.cross(ang[j].u_m).norm();
-      if (s <= ctx.tol.widened(ang[i].err + ang[j].err).angle) continue;
+      if (s <= ctx.tol.widened(ang[i].err + ang[j].err).angle || !fixesRotationWell(s)) continue;
       const double u = std::min(ang[i].err, ang[j].err) +
                        (ang[i].err + ang[j].err + ctx.tol.angle + kRounding) / s;
       if (u < best_u) best_u = u, best_i = i, best_j = j;  // (ties: the first, deterministic)
@@ -498,9 +508,10 @@ MatchResult matchSeparable(MatchContext& ctx) {
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
   // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
-  if (hasKind(ctx.set, FundamentalKind::kLineLine) || (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
-                               !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
-                               !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))) {
+  if (hasKind(ctx.set, FundamentalKind::kLineLine) ||
+      (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
+       !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
+       !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))) {
     r = detail::reanchorForEachRotation(ctx, rots);
     return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);
   }
