@@ -60,6 +60,16 @@ Centring centreSets(std::vector<ConstraintSet>& sets, bool centre) {
   return c;
 }
 
+double placementMagnitude(const Problem& problem) {
+  const Vector3d& t = problem.fixed.pose.translation();
+  double m = t.cwiseAbs().maxCoeff();
+  if (!(m > 0.0))
+    return m;  // at the origin (or NaN, which outOfRange reports) placing adds nothing
+  for (const InputConstraint& c : problem.constraints)
+    m = std::max(m, c.fixed.point.cwiseAbs().maxCoeff());
+  return m;
+}
+
 Tolerance toleranceFor(const Centring& c, double relative_length, double angle) {
   // 64 ulps of the largest coordinate: the input's own rounding (half an ulp each), its placement
   // by the fixed pose and the centring (a few ulps), with room for the rules' arithmetic.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "relpos/core/fundamental.hpp"
+#include "relpos/core/problem.hpp"
 #include "relpos/core/tolerance.hpp"
 
 namespace relpos::detail {
@@ -26,6 +27,12 @@ struct Centring {
 // Measures the sets and, when `centre`, moves their geometry (every set is an alternative of the
 // same problem, so one offset serves all).
 Centring centreSets(std::vector<ConstraintSet>& sets, bool centre);
+
+// The largest coordinate that went into placing the fixed features in the world (their points in
+// the fixed frame and the frame's origin): a world point R p + t near the origin still carries
+// the rounding of |p| and |t|, which the placed coordinates no longer show (a fixed frame 1e6
+// away puts errors of 1e-10 into features a unit apart). Joins Centring::magnitude.
+double placementMagnitude(const Problem& problem);
 
 // The tolerance for a measured problem: lengths relative to its size, never below what rounding
 // the input at its magnitude can cause (the computation's own error), angles as given.

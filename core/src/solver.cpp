@@ -445,6 +445,7 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   } else {
     decomposeAll(problem, st);
     frame = detail::centreSets(ws.pending, centre);
+    frame.magnitude = std::max(frame.magnitude, detail::placementMagnitude(problem));
     st.tol = detail::toleranceFor(frame, options.length_tolerance, options.angle_tolerance);
     if (const char* range = detail::outOfRange(frame)) setUnhandled(st, range);
   }

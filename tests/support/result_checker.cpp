@@ -115,6 +115,11 @@ void checkNulls(const json& j, const std::string& path, const std::vector<std::s
 }  // namespace
 
 double problemSize(const Problem& p) {
+  const double s = problemExtent(p);
+  return s > 0.0 ? s : 1.0;
+}
+
+double problemExtent(const Problem& p) {
   // Every feature point where the spec places it: fixed ones by the fixed pose, mobile ones by
   // the initial pose.
   std::vector<Vector3d> points;
@@ -131,7 +136,7 @@ double problemSize(const Problem& p) {
     for (double v : {cn.value, cn.min, cn.max})
       if (std::isfinite(v)) s = std::max(s, std::abs(v));
   }
-  return s > 0.0 ? s : 1.0;
+  return s;
 }
 
 RelativeEvaluator::RelativeEvaluator(const Problem& p, double size) : size_(size) {

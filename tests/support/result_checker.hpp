@@ -18,6 +18,9 @@ namespace relpos::test {
 // value if that is larger (1 when all are 0). Unchanged by rigid moves of the world or of either
 // object's frame (the initial pose moving with it), and ×s when every length is ×s.
 double problemSize(const Problem& p);
+// The same measure without the floor: 0 for a problem whose features all lie at one point and
+// whose constraints give no length (angles only), which has no size to scale.
+double problemExtent(const Problem& p);
 
 // The largest violation of any input constraint at X_WM, lengths divided by `size` (angles in
 // radians): the evaluator run on the problem centred on its fixed features and scaled to size 1.
