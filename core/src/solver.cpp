@@ -97,6 +97,23 @@ std::string describeSet(const ConstraintSet& set) {
   return s;
 }
 
+// The largest uncertainty among the constraints a rule derived.
+double derivedErr(const RuleOutput& out) {
+  double e = 0.0;
+  for (const auto& alt : out.alternatives)
+    for (const Fundamental& f : alt) {
+      if (std::isnan(f.err)) return f.err;
+      e = std::max(e, f.err);
+    }
+  return e;
+}
+bool tooUncertain(const RuleOutput& out) { return !(derivedErr(out) <= kMaxDerivedErr); }
+std::string formatAngle(const RuleOutput& out) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", derivedErr(out));
+  return buf;
+}
+
 // Rewrites one list (C_T or C_R) of `set` pairwise until no rule applies. Alternatives other than
 // the first are pushed onto the workspace's pending stack.
 SetOutcome combineList(SolveState& st, std::size_t set_index, bool translational, int& steps) {
@@ -124,6 +141,19 @@ restart:
         if (out.verdict == RuleVerdict::kNoChange) {
           pair_deferred = pair_deferred || out.deferred;
           continue;
+        }
+        if (out.verdict == RuleVerdict::kReplace && tooUncertain(out)) {
+          // First round: wait for a pair that derives the same better (a third point far from
+          // two nearly coincident ones); in the last, nothing decides it within the tolerance.
+          if (st.tol.max_amplification < Tolerance().max_amplification) {
+            pair_deferred = true;
+            continue;
+          }
+          setUnhandled(st, "rule '" + rule.firedName(out.fired) +
+                               "' derives a direction known only to " + formatAngle(out) +
+                               " rad: the features it reads are too close together to decide "
+                               "the problem within the tolerance");
+          return SetOutcome::kUnhandled;
         }
         st.solution.noteRule(rule.firedName(out.fired).c_str());
         if (++steps > st.options.max_rule_steps) {

@@ -40,7 +40,11 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
   *err = e + std::min(e / std::sqrt(std::max(ct2, 0.0)), std::sqrt(2.0 * e));
   if (ct2 < -4 * (tol.angle + e)) return 0;
   const Vector3d base = std::cos(a) * u + cphi * vu;
-  if (ct2 <= 4 * tol.angle * tol.angle + 1e-14) {
+  // Where the cones' overlap is within what the inputs are known to (ct2 moves by about 2 e), the
+  // two meetings are one tangent direction moved apart by the inputs' error: s± = base ± sqrt(ct2)
+  // would each be off the exact one by that square root (3e-6 rad for errors of 1e-11), the
+  // tangent direction by no more than the inputs.
+  if (ct2 <= 4 * (tol.angle * tol.angle + e)) {
     s[0] = base.normalized();
     return 1;
   }

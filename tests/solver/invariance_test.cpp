@@ -116,9 +116,10 @@ void runCase(const Case& c, std::uint64_t seed, FailureLog& log) {
     const double scaled_size = size * t.lengthFactor();
     // (Moved 1e6 away, each coordinate carries ~1e-10 of rounding, which the size sees.)
     // (A problem of no extent has the floor for its size, which no transform scales.)
-    if (problemExtent(original) > 0.0)
+    if (problemExtent(original) > 0.0) {
       EXPECT_NEAR(problemSize(p), scaled_size, 1e-9 * scaled_size + 1e-15 * t.reach())
           << t.label << ": " << c.name;
+    }
     if (known) {
       EXPECT_LT(RelativeEvaluator(p, scaled_size).worst(*known), 1e-8)
           << "transform: " << t.label << ": " << c.name << "\n"

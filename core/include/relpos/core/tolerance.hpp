@@ -14,6 +14,13 @@ inline constexpr double kConditioningBound = 1e3;
 // ill-conditioned construction magnifies even when no rule derived its inputs (err = 0).
 inline constexpr double kInputRounding = 16 * 2.220446049250313e-16;
 
+// The largest uncertainty (Fundamental::err, radians) a derived angle constraint may carry. Rules
+// and matchers widen their comparisons by it, a first-order allowance that holds while it is small
+// beside the problem's angles; the direction of a span 1e-12 long known to 4e-14 (err 0.17) would
+// take vectors 60° apart for one. Near-tangent readings (the square root of the tolerance, ~5e-5)
+// stay well below it.
+inline constexpr double kMaxDerivedErr = 1e-3;
+
 struct Tolerance {
   double length = 1e-9;  // absolute length tolerance, already scaled
   double angle = 1e-9;   // radians
