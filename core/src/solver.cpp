@@ -47,7 +47,8 @@ struct SolveState {
   const char* conflict_reason = "";
   std::string unhandled;  // first reason an alternative could not be decided
   bool any_unhandled = false;
-  bool deferred = false;  // a rule waited for better-conditioned pairs (RuleOutput::defer)
+  bool deferred = false;    // a rule waited for better-conditioned pairs (RuleOutput::defer)
+  bool last_round = false;  // combining what waited (combineInRounds)
 };
 
 void setUnhandled(SolveState& st, const std::string& why) {
@@ -145,7 +146,7 @@ restart:
         if (out.verdict == RuleVerdict::kReplace && tooUncertain(out)) {
           // First round: wait for a pair that derives the same better (a third point far from
           // two nearly coincident ones); in the last, nothing decides it within the tolerance.
-          if (st.tol.max_amplification < Tolerance().max_amplification) {
+          if (!st.last_round) {
             pair_deferred = true;
             continue;
           }
@@ -218,15 +219,22 @@ restart:
 }
 
 // Combines one list in two rounds: first with the conditioning bound, so that the pairs that
-// decide well go first; then, if a pair waited (RuleOutput::defer) and is still there, without
-// it, to decide what only it can.
+// decide well go first; then, if a pair waited (RuleOutput::defer) and is still there, to decide
+// what only it can — as far as the input's rounding, so magnified, stays below the angle
+// tolerance (a gain of ~3e5 at the default 1e-9). Beyond that the pair decides nothing within the
+// tolerance (two lines crossing at 1e-9 rad meet anywhere along a stretch longer than the
+// problem) and is left to the matchers, or the problem unhandled.
 SetOutcome combineInRounds(SolveState& st, std::size_t set_index, bool translational, int& steps) {
   st.deferred = false;
   SetOutcome o = combineList(st, set_index, translational, steps);
   if (o == SetOutcome::kCombined && st.deferred) {
     const Tolerance bounded = st.tol;
-    st.tol.max_amplification = Tolerance().max_amplification;
+    st.tol.max_amplification =
+        translational ? std::max(bounded.max_amplification, st.tol.angle / kInputRounding)
+                      : Tolerance().max_amplification;
+    st.last_round = true;
     o = combineList(st, set_index, translational, steps);
+    st.last_round = false;
     st.tol = bounded;
   }
   return o;
