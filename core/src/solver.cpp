@@ -504,12 +504,12 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
 // The last check before a solution leaves the solver: one pose of every branch, evaluated against
 // every input constraint by its type's own reading of the spec (ConstraintType::violation), not
 // by the rules that built the branch. A branch that breaks a constraint by far more than any
-// rounding could (100 tolerances) or holds a NaN is a numerical breakdown: the answer is then
+// rounding could (10 tolerances) or holds a NaN is a numerical breakdown: the answer is then
 // `unhandled`, never a wrong pose.
 void checkBranches(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution) {
   if (solution.status != Status::kSolved) return;
-  constexpr double kBreakdown = 100.0;
+  constexpr double kBreakdown = 10.0;
   // What every branch is checked against, looked up and placed once (≤ 64 constraints).
   struct Check {
     const ConstraintType* type;
