@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -128,8 +129,12 @@ double problemExtent(const Problem& p) {
   Vector3d c = Vector3d::Zero();
   for (const Vector3d& q : points) c += q;
   if (!points.empty()) c /= static_cast<double>(points.size());
-  double s = 0.0;
+  double s = 0.0, magnitude = 0.0;
   for (const Vector3d& q : points) s = std::max(s, (q - c).norm());
+  for (const Vector3d& q : points) magnitude = std::max(magnitude, q.norm());
+  // Points that coincide but for the rounding of placing them have no extent (a spread of 1e-16
+  // would make every comparison relative to it).
+  if (s <= 1e3 * std::numeric_limits<double>::epsilon() * magnitude) s = 0.0;
   for (const InputConstraint& cn : p.constraints) {
     s = std::max({s, cn.fixed.radius, cn.mobile.radius});
     if (cn.type == "angle") continue;
