@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -116,20 +115,6 @@ std::string formatAngle(const RuleOutput& out) {
   return buf;
 }
 
-// TEMP-TRACE
-void traceF(const Fundamental& f) {
-  std::fprintf(stderr, "   %s side=%d p=(%.17g %.17g %.17g) q=(%.17g %.17g %.17g) d=(%.17g %.17g %.17g) v=%.17g err=%.3g\n",
-               toString(f.kind), (int)f.point_side, f.p.x(), f.p.y(), f.p.z(), f.q.x(), f.q.y(), f.q.z(), f.d.x(), f.d.y(), f.d.z(), f.lo, f.err);
-}
-void traceRule(const char* name, const Fundamental& a, const Fundamental& b, const RuleOutput& out) {
-  std::fprintf(stderr, "RULE %s\n", name);
-  traceF(a);
-  traceF(b);
-  for (const auto& alt : out.alternatives) {
-    std::fprintf(stderr, "  ALT\n");
-    for (const auto& f : alt) traceF(f);
-  }
-}
 // Rewrites one list (C_T or C_R) of `set` pairwise until no rule applies. Alternatives other than
 // the first are pushed onto the workspace's pending stack.
 SetOutcome combineList(SolveState& st, std::size_t set_index, bool translational, int& steps) {
@@ -172,7 +157,6 @@ restart:
           return SetOutcome::kUnhandled;
         }
         st.solution.noteRule(rule.firedName(out.fired).c_str());
-        if (std::getenv("RELPOS_TRACE")) { std::fprintf(stderr, "tol.length=%.3g angle=%.3g\n", st.tol.length, st.tol.angle); traceRule(rule.firedName(out.fired).c_str(), a, b, out); }
         if (++steps > st.options.max_rule_steps) {
           setUnhandled(st, "the combination rules did not settle within " +
                                std::to_string(st.options.max_rule_steps) + " steps");
@@ -412,22 +396,22 @@ void runPending(SolveState& st) {
   Solution& solution = st.solution;
   SourceMask redundant = ~SourceMask{0};
   bool any_solved_set = false;
+  const Tolerance problem_tol = st.tol;
   for (std::size_t s = 0; !st.any_unhandled && s < ws.pending.size(); ++s) {
     if (ws.pending[s].overflow) {
       setUnhandled(st, "too many fundamental constraints");
       break;
     }
     int steps = 0;
+    // A set derived under an uncertain rotation has its lengths decided within that too
+    // (ConstraintSet::slack).
+    st.tol = problem_tol;
+    st.tol.length += ws.pending[s].slack;
     SetOutcome o = combineInRounds(st, s, true, steps);
     if (o == SetOutcome::kCombined) o = combineInRounds(st, s, false, steps);
     if (o == SetOutcome::kUnhandled) break;
     if (o == SetOutcome::kInconsistent) continue;
     const ConstraintSet& set = ws.pending[s];
-    if (std::getenv("RELPOS_TRACE")) {
-      std::fprintf(stderr, "MATCH set %zu tol.length=%.3g\n", s, st.tol.length);
-      for (const auto& f : set.translational) traceF(f);
-      for (const auto& f : set.rotational) traceF(f);
-    }
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
     for (const MatcherInfo& m : st.registry.matchers()) {
@@ -466,6 +450,7 @@ void runPending(SolveState& st) {
         solution.branches[b].sources |= set.usedSources();
     }
   }
+  st.tol = problem_tol;
 
   if (st.any_unhandled) {
     solution.status = Status::kUnhandled;

@@ -1,5 +1,7 @@
 #include "derived_sets.hpp"
 
+#include <algorithm>
+
 namespace relpos::manifolds::detail {
 namespace {
 
@@ -66,9 +68,9 @@ bool anchored(const ConstraintSet& set) {
   return true;
 }
 
-// The set for the rotation R: it rides along as two parallelisms (the original rotational
-// constraints are all summed up in R).
-void startDerived(const ConstraintSet& set, const Matrix3d& R, ConstraintSet& derived) {
+// The set for the rotation R, known to `err` rad: it rides along as two parallelisms (the
+// original rotational constraints are all summed up in R) carrying that uncertainty.
+void startDerived(const ConstraintSet& set, const Matrix3d& R, double err, ConstraintSet& derived) {
   SourceMask rot_sources = 0;
   for (const auto& f : set.rotational) rot_sources |= f.sources;
   derived.clear();
@@ -76,8 +78,21 @@ void startDerived(const ConstraintSet& set, const Matrix3d& R, ConstraintSet& de
   derived.revolve = set.revolve;
   derived.revolve_point = set.revolve_point;
   derived.revolve_axis = set.revolve_axis;
-  derived.add(Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources));
-  derived.add(Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources));
+  derived.slack = set.slack;
+  Fundamental x = Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources);
+  Fundamental y = Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources);
+  x.err = y.err = err;
+  derived.add(x);
+  derived.add(y);
+}
+
+// The longest lever a rotation turns in the set's translational constraints: the mobile points
+// and mobile elements' points (centred: measured from the middle of the mobile features).
+double mobileLever(const ConstraintSet& set) {
+  double lever = 0.0;
+  for (const auto& f : set.translational)
+    lever = std::max(lever, (f.point_side == Side::kMobile ? f.p : f.q).norm());
+  return lever;
 }
 
 // A point of the line about which constraint f is invariant, if f pins one; false when f is not
@@ -133,6 +148,7 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
   Fundamental shapes[kMaxFundamentals][2];
   int n_shapes[kMaxFundamentals];
   ConstraintSet derived;
+  const double lever = mobileLever(ctx.set);
   for (int k = 0; k < rots.count; ++k) {
     const Matrix3d& R = rots.parts[k].R0;
     // One derived set per choice of side for every two-sided shape (a mixed odometer).
@@ -143,7 +159,9 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
       if (combos > 64) return MatchResult::kOverflow;
     }
     for (int combo = 0; combo < combos; ++combo) {
-      startDerived(ctx.set, R, derived);
+      startDerived(ctx.set, R, rots.err[k], derived);
+      // Turned by up to err, every mobile point moves by up to err times its lever.
+      derived.slack += rots.err[k] * lever;
       for (std::size_t i = 0, rest = combo; i < ts.size(); ++i) {
         derived.add(shapes[i][rest % n_shapes[i]]);
         rest /= n_shapes[i];
@@ -163,7 +181,8 @@ MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives
       return MatchResult::kNoMatch;
   ConstraintSet derived;
   for (int k = 0; k < rots.count; ++k) {
-    startDerived(ctx.set, rots.parts[k].R0, derived);
+    startDerived(ctx.set, rots.parts[k].R0, rots.err[k], derived);
+    derived.slack += rots.err[k] * mobileLever(ctx.set);
     derived.revolve = true;
     derived.revolve_point = c[k];
     derived.revolve_axis = rots.parts[k].u_f;

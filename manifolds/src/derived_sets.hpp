@@ -13,9 +13,13 @@ constexpr int kMaxRotations = 8;
 // default-constructing eight rotation parts each time was a tenth of a solve.
 struct RotationAlternatives {
   FixedVector<RotationPart, kMaxRotations> parts;
+  // err[k]: how far parts[k] may turn from the exact rotation (radians), when it was fixed from
+  // derived vectors (Fundamental::err); 0 for vectors as given.
+  double err[kMaxRotations];
   int count = 0;
-  void add(const RotationPart& r) {
-    if (parts.push_back(r)) ++count;
+  void add(const RotationPart& r, double uncertainty = 0.0) {
+    if (!parts.push_back(r)) return;
+    err[count++] = uncertainty;
   }
 };
 

@@ -75,7 +75,10 @@ MatchResult twoParallels(MatchContext& ctx, const Angle& a0, const Angle& b0,
   const bool swap = b0.err < a0.err;
   const Angle& a = swap ? b0 : a0;
   const Angle& b = swap ? a0 : b0;
-  out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)));
+  // Meeting a exactly, the rotation is off by a's own uncertainty, and turned about it by what
+  // both leave uncertain in b's part across a (of length s).
+  out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)),
+          a.err + (a.err + b.err) / s);
   return MatchResult::kMatched;
 }
 
@@ -159,7 +162,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
   for (double s : {1.0, -1.0}) {
     if (tol.equalAngle(angleBetween(s * b->u_f, a->u_f), a->alpha) &&
         std::abs(s * cos_sm - std::cos(b->alpha)) <= tol.angle) {
-      out.add(RotationPart::oneParallel(a->u_m, s * b->u_f));
+      out.add(RotationPart::oneParallel(a->u_m, s * b->u_f), a->err + b->err);
       ++n_circles;
     }
   }
@@ -170,7 +173,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
     if (iv.iv[k].hi - iv.iv[k].lo <= tol.angle) {
       // A single φ: both θ signs meet, one discrete rotation.
       double th[1] = {0.5 * (iv.iv[k].lo + iv.iv[k].hi)};
-      out.add(RotationPart::fixed(base.rotation(th)));
+      out.add(RotationPart::fixed(base.rotation(th)), a->err + b->err);
       continue;
     }
     for (double sign : {1.0, -1.0}) {
@@ -209,7 +212,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
     if (diag.prod() < 0)
       return inconsistent(ctx, all, "three angle constraints that no rotation satisfies");
     for (int k = 0; k < 3; ++k) M.col(k) = ang[k].u_m, F.col(k) = ang[k].u_f;
-    out.add(RotationPart::fixed(F * diag.asDiagonal() * M.transpose()));
+    out.add(RotationPart::fixed(F * diag.asDiagonal() * M.transpose()), a.err + b.err + c.err);
     return MatchResult::kMatched;
   }
   const Angle& A = ang[first];
@@ -233,7 +236,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
         bool dup = false;
         for (int j = 0; j < out.count; ++j)
           dup = dup || (out.parts[j].R0 - R).cwiseAbs().maxCoeff() < 1e-9;
-        if (!dup) out.add(RotationPart::fixed(R));
+        if (!dup) out.add(RotationPart::fixed(R), a.err + b.err + c.err);
       }
   return MatchResult::kMatched;
 }
@@ -275,7 +278,7 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
                           "a rotation fixed by two parallelisms violates another rotational "
                           "constraint");
   }
-  out.add(two.parts[0]);
+  out.add(two.parts[0], two.err[0]);
   return MatchResult::kMatched;
 }
 
@@ -310,7 +313,8 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
   }
   if (n == 1) {
     out.add(ang[0].parallel ? RotationPart::oneParallel(ang[0].u_m, ang[0].u_f)
-                            : RotationPart::oneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha));
+                            : RotationPart::oneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha),
+            ang[0].err);
     return MatchResult::kMatched;
   }
   if (n == 2 && n_par == 2) return twoParallels(ctx, ang[0], ang[1], out);

@@ -84,7 +84,7 @@ inline constexpr std::size_t kMaxFundamentals = 24;
 struct ConstraintSet {
   // User-provided: value-initialising a set (emplace_back(), `{}`) would otherwise zero its
   // 7 KB of slots first, a fifth of a small solve.
-  ConstraintSet() noexcept {}  // NOLINT(modernize-use-equals-default)
+  ConstraintSet() noexcept {}                                // NOLINT(modernize-use-equals-default)
   FixedVector<Fundamental, kMaxFundamentals> translational;  // C_T
   FixedVector<Fundamental, kMaxFundamentals> rotational;     // C_R
   // Pairs (by id) already tested without any rule applying: not tested again, also not after a
@@ -98,6 +98,11 @@ struct ConstraintSet {
   // X' of X = Rot(line, phi) X', and every branch matched from it must be a revolved manifold.
   bool revolve = false;
   Vector3d revolve_point = Vector3d::Zero(), revolve_axis = Vector3d::UnitZ();
+  // How far the set's geometry may be from the problem's, in lengths, because a matcher derived
+  // it under a rotation known only to an uncertainty (re-anchoring after two derived
+  // parallelisms): the solver decides the set's lengths within the tolerance plus this, so that
+  // the rotation's error is not read as a violation. 0 for the sets the constraints decompose to.
+  double slack = 0.0;
   void clear() {
     translational.clear();
     rotational.clear();
@@ -106,6 +111,7 @@ struct ConstraintSet {
     next_id = 1;
     overflow = false;
     revolve = false;
+    slack = 0.0;
   }
   void add(Fundamental f) {
     f.id = next_id++;

@@ -30,7 +30,7 @@ namespace relpos {
 // the virtual closedFormParams/poseWithTail, which moves every later vtable slot; 3: the built-in
 // SeparableManifold and RadialGraspManifold a plugin may build gained members; 4: Manifold gained
 // the virtual rebase, and Branch, which a plugin's matcher appends, its origin).
-inline constexpr long kPluginAbiVersion = 4;
+inline constexpr long kPluginAbiVersion = 5;
 
 // The version with a fingerprint of the shared layouts folded in, so a plugin built against other
 // headers is refused even when the version number was not bumped.
