@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace relpos::detail {
@@ -84,6 +85,19 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle) 
   // waits for the pairs that decide better (solver.cpp).
   t.max_amplification = kConditioningBound;
   return t;
+}
+
+std::string tooFarFromOrigin(const Centring& c, const Tolerance& decided, double relative_length) {
+  // (A problem of no extent has no lengths to decide but at its one point.)
+  const double asked = relative_length * c.size;
+  if (!(c.size > 0.0) || !(decided.length > kMaxRoundingWidening * asked)) return std::string();
+  char why[240];
+  std::snprintf(why, sizeof why,
+                "coordinates of %.3g for a problem of size %.3g: their rounding (%.3g) exceeds the "
+                "length tolerance asked for (%.3g) more than %.0f-fold; express the features "
+                "nearer their frames' origins",
+                c.magnitude, c.size, decided.length, asked, kMaxRoundingWidening);
+  return why;
 }
 
 const char* outOfRange(const Centring& c) {

@@ -6,6 +6,7 @@
 // with coordinates of the problem's own size: a task moved 10⁶ away, or whose part frame lies far
 // from its features, is decided as it is at the origin, and one scaled by 10⁻⁶ or 10⁶ as it is in
 // metres (floating point is relative; only the tolerance had an absolute floor).
+#include <string>
 #include <vector>
 
 #include "relpos/core/fundamental.hpp"
@@ -41,5 +42,16 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle);
 // Empty when the problem's numbers are in the range the solver computes with, else why not:
 // squares of lengths beyond 1e100 overflow, and of lengths below 1e-100 underflow.
 const char* outOfRange(const Centring& c);
+
+// How many times the coordinates' rounding may widen the requested length tolerance (the floor
+// of toleranceFor) before the problem is no longer decided as asked: beyond it the answer is
+// unhandled. A task of size 3 placed 1e6 away widens it about fivefold, features 7 mm apart there
+// about 2,000-fold (directions still known to 2e-6 rad); 1e13 away, the floor would pass
+// perpendicular planes for parallel. (At the limit, the angle floor is 1e-4 rad.)
+inline constexpr double kMaxRoundingWidening = 1e5;
+
+// Empty when the tolerance decided is within kMaxRoundingWidening of the one asked for, else why
+// the problem cannot be decided there.
+std::string tooFarFromOrigin(const Centring& c, const Tolerance& decided, double relative_length);
 
 }  // namespace relpos::detail

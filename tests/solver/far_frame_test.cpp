@@ -39,5 +39,32 @@ TEST(FarFixedFrame, SmallTaskStaysFeasible) {
   }
 }
 
+// 1e15 from the origin, coordinates carry ~0.1 of rounding: a task 0.1 across cannot be decided
+// there (perpendicular planes would pass for parallel ones). Unhandled, not a wrong `solved`.
+TEST(FarFixedFrame, BeyondWhatRoundingCanDecideIsUnhandled) {
+  Problem p;
+  p.fixed.pose.translation() = Vector3d(0, 0, 1e15);
+  p.addFixedFeature("bottom", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitZ()));
+  p.addFixedFeature("front", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitY()));
+  p.addMobileFeature("palm", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitZ()));
+  p.addConstraint("distance", "bottom", "palm", 0.05);
+  p.addConstraint("distance", "front", "palm", 0.1);
+  const Solution s = solve(p, builtinRegistry());
+  EXPECT_EQ(s.status, Status::kUnhandled) << describeBranches(s);
+  EXPECT_NE(s.message.find("rounding"), std::string::npos) << s.message;
+}
+
+// An initial pose beyond 1e100: its nearest poses' distances would overflow to infinity.
+TEST(FarInitialPose, BeyondRangeIsUnhandled) {
+  Problem p;
+  p.mobile.pose.translation() = Vector3d(1e300, 0, 0);
+  p.addFixedFeature("O", Feature::makePoint(Vector3d::Zero()));
+  p.addMobileFeature("o", Feature::makePoint(Vector3d::Zero()));
+  p.addConstraint("coincident", "O", "o");
+  const Solution s = solve(p, builtinRegistry());
+  EXPECT_EQ(s.status, Status::kUnhandled);
+  EXPECT_NE(s.message.find("initial pose"), std::string::npos) << s.message;
+}
+
 }  // namespace
 }  // namespace relpos::test
