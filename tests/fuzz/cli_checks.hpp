@@ -41,7 +41,8 @@ struct Report {
 struct Tally {
   long batch_lines = 0, solve_calls = 0, in_process = 0;
   std::map<std::string, long> statuses;  // solved, inconsistent, unhandled, invalid
-  std::map<std::string, long> findings;  // kind -> count
+  std::map<std::string, long> findings;  // kind -> count (known failures not included)
+  std::map<std::string, long> known;     // known failure id -> count (known_failures.hpp)
   std::vector<Report> reports;           // the first `keep` findings in full
   std::size_t keep = 50;
   double slowest_s = 0.0;
@@ -69,5 +70,9 @@ double checkSolve(const CliOptions& opts, const Mutant& spec, const std::string&
 // parseSpec, solve and writeResultLine in this process, as a batch worker runs them, with the
 // result read back and checked; returns the seconds it took.
 double checkInProcess(const Mutant& spec, int samples, std::uint64_t seed, Tally& tally);
+
+// A saved input (tests/fuzz/regressions/) through every path above: solve, batch (as a line,
+// when it holds no newline) and in-process.
+void checkSaved(const CliOptions& opts, const std::filesystem::path& file, Tally& tally);
 
 }  // namespace relpos::fuzz

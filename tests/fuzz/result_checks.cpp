@@ -365,10 +365,29 @@ void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line) {
       const std::string shown = "'" + printable(d.path) + "': '" + printable(d.message) + "'";
       if (one_line && (d.path.find('\n') != std::string::npos ||
                        d.message.find('\n') != std::string::npos))
-        out.push_back({"split-message", "a diagnostic holds a newline: " + shown});
+        out.push_back({"split-diagnostic", "a diagnostic holds a newline: " + shown});
       if (d.path.empty() && !saysMalformedAt(d.message))
         out.push_back({"pathless-message", "no JSON path: " + shown});
     }
+}
+
+void checkAccepted(std::string_view text, const ParseResult& r, Findings& out) {
+  if (!r.problem) return;
+  // Up to the first NUL: what a reader that stops there has read (the rest it has not).
+  const std::string_view read = text.substr(0, text.find('\0'));
+  if (!isValidUtf8(read)) out.push_back({"accepted-invalid-json", "a spec that is not UTF-8 was read"});
+  for (std::size_t i = 0; i < read.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(read[i]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      out.push_back({"accepted-invalid-json", "a spec holding the raw byte " +
+                                                  printable(read.substr(i, 1)) + " at offset " +
+                                                  std::to_string(i) + " was read"});
+      return;
+    }
+  }
+  if (read.size() < text.size())
+    out.push_back({"accepted-invalid-json", "a spec holding the raw byte \\x00 at offset " +
+                                                std::to_string(read.size()) + " was read"});
 }
 
 std::string printable(std::string_view s, std::size_t n) {

@@ -17,8 +17,9 @@ namespace relpos::fuzz {
 
 // One broken invariant. Kinds: "wrong-answer" (a reported pose violates a constraint),
 // "bad-output" (not UTF-8 or JSON, a NaN/null where SPEC has a number, a field of the wrong
-// shape), "split-message", "pathless-message"; the CLI checks add "crash", "hang", "exit-1",
-// "exit-code", "lost-line" and "slow".
+// shape), "split-diagnostic" (a Diagnostic holding a newline), "pathless-message"; the CLI
+// checks add "split-message" (a stderr line that does not name the file), "crash", "hang", "exit-1",
+// "exit-code", "lost-line" and "slow"; checkAccepted "accepted-invalid-json".
 struct Finding {
   std::string kind;
   std::string detail;
@@ -58,6 +59,11 @@ void checkResultText(const std::string& text, const Problem& problem,
 // with no errors, no problem with at least one. With `one_line`, no diagnostic holds a newline
 // (the library's promise; the CLI also escapes what it prints, which its own checks see).
 void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line = true);
+
+// A reader that gives a problem has read one JSON document (RFC 8259): the text is valid UTF-8
+// and holds no control character but tab, newline and carriage return (JSON allows them nowhere
+// else, raw) — in particular no NUL, after which a C-string reader would stop reading.
+void checkAccepted(std::string_view text, const ParseResult& r, Findings& out);
 
 // Whether a message (after "FILE: ") is "malformed JSON at line L, column C…".
 bool saysMalformedAt(std::string_view message);
