@@ -118,24 +118,22 @@ std::optional<Finding> batchProcessFailure(const CliOptions& o, const std::vecto
                         o.batch_timeout_s);
 }
 
-// Halves the lines until the ones that make a batch fail on their own are found.
-void bisect(const CliOptions& o, const std::vector<Mutant>& lines, const std::string& name,
-            const Finding& failure, Tally& tally, int depth = 0) {
-  if (lines.size() == 1) return tally.add(failure, lines[0], "batch (one line)");
-  const auto mid = lines.begin() + static_cast<std::ptrdiff_t>(lines.size() / 2);
-  bool found = false;
-  for (const std::vector<Mutant>& half : {std::vector<Mutant>(lines.begin(), mid),
-                                          std::vector<Mutant>(mid, lines.end())}) {
-    const std::string part = name + "-" + std::to_string(depth) + (found ? "b" : "a");
-    if (auto f = batchProcessFailure(o, half, part)) {
-      found = true;
-      bisect(o, half, part, *f, tally, depth + 1);
-    }
+// Halves the lines [from, to) until the ones that make a batch fail on their own are found:
+// each is reported, its index added to `culprits`.
+void bisect(const CliOptions& o, const std::vector<Mutant>& lines, std::size_t from,
+            std::size_t to, const std::string& name, const Finding& failure, Tally& tally,
+            std::vector<std::size_t>& culprits) {
+  if (to - from == 1) {
+    tally.add(failure, lines[from], "batch (one line)");
+    culprits.push_back(from);
+    return;
   }
-  if (!found) {  // only together: report the first line as the input, with how many there were
-    Finding f = failure;
-    f.detail += " (only with all " + std::to_string(lines.size()) + " lines of this batch)";
-    tally.add(f, lines[0], "batch");
+  const std::size_t mid = from + (to - from) / 2;
+  for (const auto& [a, b] : {std::pair{from, mid}, std::pair{mid, to}}) {
+    const std::vector<Mutant> half(lines.begin() + static_cast<std::ptrdiff_t>(a),
+                                   lines.begin() + static_cast<std::ptrdiff_t>(b));
+    const std::string part = name + "-" + std::to_string(a);
+    if (auto f = batchProcessFailure(o, half, part)) bisect(o, lines, a, b, part, *f, tally, culprits);
   }
 }
 
@@ -218,6 +216,79 @@ void Tally::timed(double seconds, const std::string& where, const Mutant& input,
     add({"slow", where + " took " + std::to_string(seconds) + " s"}, input, where);
 }
 
+void Tally::merge(const Tally& t) {
+  batch_lines += t.batch_lines;
+  solve_calls += t.solve_calls;
+  in_process += t.in_process;
+  for (const auto& [k, n] : t.statuses) statuses[k] += n;
+  for (const auto& [k, n] : t.findings) findings[k] += n;
+  for (const auto& [k, n] : t.known) known[k] += n;
+  for (const Report& r : t.reports)
+    if (reports.size() < keep) reports.push_back(r);
+  if (t.slowest_s > slowest_s) slowest_s = t.slowest_s, slowest = t.slowest;
+}
+
+namespace {
+// Strings as "LENGTH\nBYTES": any byte survives.
+void put(std::ostream& o, const std::string& s) { o << s.size() << '\n' << s; }
+std::string get(std::istream& in) {
+  std::size_t n = 0;
+  in >> n;
+  in.get();
+  std::string s(n, '\0');
+  in.read(s.data(), static_cast<std::streamsize>(n));
+  return s;
+}
+void putMap(std::ostream& o, const std::map<std::string, long>& m) {
+  o << m.size() << '\n';
+  for (const auto& [k, n] : m) put(o, k), o << ' ' << n << '\n';
+}
+std::map<std::string, long> getMap(std::istream& in) {
+  std::map<std::string, long> m;
+  std::size_t size = 0;
+  in >> size;
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::string k = get(in);
+    in >> m[k];
+  }
+  return m;
+}
+}  // namespace
+
+void Tally::save(const fs::path& file) const {
+  std::ofstream o(file, std::ios::binary);
+  o << batch_lines << ' ' << solve_calls << ' ' << in_process << ' ' << slowest_s << '\n';
+  put(o, slowest);
+  putMap(o, statuses);
+  putMap(o, findings);
+  putMap(o, known);
+  o << reports.size() << '\n';
+  for (const Report& r : reports)
+    for (const std::string* s : {&r.finding.kind, &r.finding.detail, &r.input.text, &r.input.origin,
+                                 &r.input.edits, &r.command})
+      put(o, *s);
+}
+
+Tally Tally::load(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  Tally t;
+  in >> t.batch_lines >> t.solve_calls >> t.in_process >> t.slowest_s;
+  t.slowest = get(in);
+  t.statuses = getMap(in);
+  t.findings = getMap(in);
+  t.known = getMap(in);
+  std::size_t n = 0;
+  in >> n;
+  for (std::size_t i = 0; i < n && in; ++i) {
+    Report r;
+    for (std::string* s : {&r.finding.kind, &r.finding.detail, &r.input.text, &r.input.origin,
+                           &r.input.edits, &r.command})
+      *s = get(in);
+    t.reports.push_back(std::move(r));
+  }
+  return t;
+}
+
 std::string Tally::text(std::size_t max_reports) const {
   std::ostringstream s;
   s << "batch lines " << batch_lines << ", solve calls " << solve_calls << ", in-process "
@@ -242,17 +313,42 @@ std::string Tally::text(std::size_t max_reports) const {
   return s.str();
 }
 
+// One batch over the lines, its output checked; the process failure when it failed so.
+std::optional<Finding> checkBatchOnce(const CliOptions& o, const std::vector<Mutant>& lines,
+                                      const std::string& name, Tally& tally);
+
 bool checkBatch(const CliOptions& o, const std::vector<Mutant>& lines, const std::string& name,
-                Tally& tally) {
+                Tally& tally, std::vector<Mutant>* checked) {
+  tally.batch_lines += static_cast<long>(lines.size());
+  std::vector<Mutant> rest = lines;
+  for (;;) {
+    if (rest.empty()) break;
+    const std::optional<Finding> failure = checkBatchOnce(o, rest, name, tally);
+    if (!failure) break;
+    std::vector<std::size_t> culprits;
+    bisect(o, rest, 0, rest.size(), name, *failure, tally, culprits);
+    if (culprits.empty()) {  // only together: reported with the first line as its input
+      Finding f = *failure;
+      f.detail += " (only with all " + std::to_string(rest.size()) + " lines of this batch)";
+      tally.add(f, rest[0], "batch");
+      if (checked) checked->clear();
+      return false;
+    }
+    // The others are checked again without the lines that take the batch down.
+    for (std::size_t k = culprits.size(); k-- > 0;)
+      rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(culprits[k]));
+  }
+  if (checked) *checked = rest;
+  return rest.size() == lines.size();
+}
+
+std::optional<Finding> checkBatchOnce(const CliOptions& o, const std::vector<Mutant>& lines,
+                                      const std::string& name, Tally& tally) {
   const fs::path in = o.dir / (name + ".jsonl"), out = o.dir / (name + ".results.jsonl");
   spit(in, joinedLines(lines));
   fs::remove(out);
-  tally.batch_lines += static_cast<long>(lines.size());
   const Ran r = runRelpos(o, batchArgs(o, in, out), name, o.batch_timeout_s);
-  if (auto failure = processFailure(r, {0}, o.batch_timeout_s)) {
-    bisect(o, lines, name, *failure, tally);
-    return false;
-  }
+  if (auto failure = processFailure(r, {0}, o.batch_timeout_s)) return failure;
   // stderr: the summary ("batch: …" and its indented lines); anything else names the file.
   for (const std::string& line : linesOf(r.err))
     if (!startsWith(line, "batch: ") && !startsWith(line, "  ") && !startsWith(line, in.string()))
@@ -266,7 +362,7 @@ bool checkBatch(const CliOptions& o, const std::vector<Mutant>& lines, const std
     const std::string n = std::to_string(i + 1);
     checkBatchLine(o, lines[i], results[i], in.string() + ":" + n, name + ":" + n, tally);
   }
-  return true;
+  return std::nullopt;
 }
 
 double checkSolve(const CliOptions& o, const Mutant& spec, const std::string& name, Tally& tally) {

@@ -55,13 +55,19 @@ struct Tally {
   // A summary and the kept reports, one per line (inputs quoted printable).
   std::string text(std::size_t max_reports = 20) const;
   void timed(double seconds, const std::string& where, const Mutant& input, double slow_s);
+  // Adds another tally's counts and reports (the campaign runs chunks in child processes).
+  void merge(const Tally& other);
+  // Byte-exact text form (inputs may hold any byte), for a child process to hand back.
+  void save(const std::filesystem::path& file) const;
+  static Tally load(const std::filesystem::path& file);
 };
 
 // `relpos batch` over `lines` written as one JSONL file (`name`.jsonl in opts.dir). When the
 // process crashes, hangs or exits 1, the lines are bisected with further batches until the
-// lines that do it alone are found. False when the process failed so.
+// lines that do it alone are found; those are reported and the others run again without them.
+// `checked` (optional) receives the lines whose results were checked; true when all were.
 bool checkBatch(const CliOptions& opts, const std::vector<Mutant>& lines, const std::string& name,
-                Tally& tally);
+                Tally& tally, std::vector<Mutant>* checked = nullptr);
 
 // `relpos solve FILE` (`name`.json in opts.dir) for one spec; returns its wall time in seconds.
 double checkSolve(const CliOptions& opts, const Mutant& spec, const std::string& name,

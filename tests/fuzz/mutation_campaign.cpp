@@ -3,12 +3,18 @@
 // of mutated lines, `relpos solve` on mutated files — and every batch line once more in this
 // process (parseSpec, solve, writeResultLine: a batch worker's path), timed one by one so that a
 // spec slower than a second is flagged. Prints a summary (crashes, hangs, wrong answers, exit-1
-// results, split or pathless messages) and saves every failing input under OUT/findings/.
+// results, split or pathless messages) and saves every failing input under OUT/findings/. Each
+// chunk is checked in a child process: a spec that takes the library down in-process (a stack
+// overflow, a hang) is then found by bisecting and reported, and the campaign goes on.
 // Not part of CI (it takes minutes). Exit 0 when nothing failed, 1 otherwise.
 //
 //   build/tests/fuzz/relpos_mutation_campaign [--lines N] [--solves N] [--chunk N] [--seed S]
 //                                             [--jobs N] [--out DIR]
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
+#include <functional>
 
 #include <chrono>
 #include <cstdio>
@@ -64,6 +70,86 @@ Mutant next(Mutator& m, const std::vector<Seed>& seeds, long i) {
   return x;
 }
 
+// Runs `work` in a child process that hands its tally back through `file`; false (and how it
+// died: "hang" after `timeout_s`, or the signal or exit status) when it did not finish.
+bool isolated(const std::function<void(Tally&)>& work, const fs::path& file, int timeout_s,
+              Tally& into, std::string* how) {
+  fs::remove(file);
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    alarm(static_cast<unsigned>(timeout_s));
+    Tally t;
+    t.keep = into.keep;
+    work(t);
+    t.save(file);
+    std::_Exit(0);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(file)) {
+    into.merge(Tally::load(file));
+    return true;
+  }
+  if (WIFSIGNALED(status))
+    *how = WTERMSIG(status) == SIGALRM ? "hang" : "signal " + std::to_string(WTERMSIG(status));
+  else
+    *how = "exit " + std::to_string(WEXITSTATUS(status));
+  return false;
+}
+
+using CheckAll = std::function<void(const std::vector<Mutant>&, Tally&)>;
+using CheckOne = std::function<void(const Mutant&, Tally&)>;
+
+// The items of [from, to) that take a checking process down on their own.
+void locate(const std::vector<Mutant>& items, std::size_t from, std::size_t to,
+            const CheckOne& one, const fs::path& file, std::vector<std::size_t>& culprits,
+            std::vector<std::string>& hows) {
+  Tally scratch;
+  std::string how;
+  const bool ok = isolated(
+      [&](Tally& t) {
+        for (std::size_t i = from; i < to; ++i) one(items[i], t);
+      },
+      file, 600, scratch, &how);
+  if (ok) return;
+  if (to - from == 1) {
+    culprits.push_back(from);
+    hows.push_back(how);
+    return;
+  }
+  const std::size_t mid = from + (to - from) / 2;
+  locate(items, from, mid, one, file, culprits, hows);
+  locate(items, mid, to, one, file, culprits, hows);
+}
+
+// Checks the items with `all` in a child process; when it dies, the items that do it alone
+// (found with `one`) are reported as crashes or hangs and the rest is checked again without
+// them.
+void checkIsolated(std::vector<Mutant> items, const CheckAll& all, const CheckOne& one,
+                   const fs::path& file, const std::string& where, Tally& tally) {
+  for (;;) {
+    std::string how;
+    if (isolated([&](Tally& t) { all(items, t); }, file, 3600, tally, &how)) return;
+    std::vector<std::size_t> culprits;
+    std::vector<std::string> hows;
+    locate(items, 0, items.size(), one, file, culprits, hows);
+    if (culprits.empty()) {
+      tally.add({"crash", "the checking process died (" + how + ") only on the whole chunk"},
+                items[0], where);
+      return;
+    }
+    for (std::size_t k = culprits.size(); k-- > 0;) {
+      tally.add({hows[k] == "hang" ? "hang" : "crash",
+                 "checking it in-process (parseSpec, solve, writeResultLine) took the process "
+                 "down: " + hows[k]},
+                items[culprits[k]], where);
+      items.erase(items.begin() + static_cast<std::ptrdiff_t>(culprits[k]));
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,33 +168,48 @@ int main(int argc, char** argv) {
   // Batch lines: mutated in chunks (one batch process each), then each line in this process.
   MutationOptions line_options;
   line_options.one_line = true;
-  line_options.max_depth = 100000;
+  line_options.max_depth = 300000;
   Mutator lines(a.seed, line_options);
-  double in_process_s = 0;
   for (long done = 0; done < a.lines;) {
     std::vector<Mutant> chunk;
     for (; done < a.lines && static_cast<long>(chunk.size()) < a.chunk; ++done)
       chunk.push_back(next(lines, seeds, done));
     const std::string name = "chunk-" + std::to_string(done);
-    // A chunk whose batch crashed or hung is not run again here (it would take this process
-    // down): its culprits are already found by bisecting.
-    if (checkBatch(o, chunk, name, tally))
-      for (std::size_t i = 0; i < chunk.size(); ++i) {
-        const double s = checkInProcess(chunk[i], o.samples, o.seed, tally);
-        in_process_s += s;
-        tally.timed(s, "in-process " + name + ".jsonl:" + std::to_string(i + 1), chunk[i],
+    // The batch, then every line in-process, in a child process. Lines that crash or hang a
+    // batch are not run again in-process: they are reported already (found by bisecting).
+    checkIsolated(
+        chunk,
+        [&](const std::vector<Mutant>& lines, Tally& t) {
+          std::vector<Mutant> rest;
+          checkBatch(o, lines, name, t, &rest);
+          for (std::size_t i = 0; i < rest.size(); ++i) {
+            const double s = checkInProcess(rest[i], o.samples, o.seed, t);
+            t.timed(s, "in-process " + name + ".jsonl:" + std::to_string(i + 1), rest[i],
                     o.slow_s);
-      }
+          }
+        },
+        [&](const Mutant& m, Tally& t) { checkInProcess(m, o.samples, o.seed, t); },
+        a.out / "tally", "in-process " + name, tally);
     std::cerr << "\rbatch lines " << done << "/" << a.lines << ", failures " << tally.failures()
               << std::flush;
   }
   std::cerr << "\n";
-  Mutator files(a.seed + 1, MutationOptions{false, 100000, 0.002});
-  for (long i = 0; i < a.solves; ++i) {
-    checkSolve(o, next(files, seeds, i), "spec-" + std::to_string(i % 100), tally);
-    if (i % 100 == 99)
-      std::cerr << "\rsolve calls " << i + 1 << "/" << a.solves << ", failures "
-                << tally.failures() << std::flush;
+  Mutator files(a.seed + 1, MutationOptions{false, 300000, 0.002});
+  constexpr long kSolveChunk = 500;
+  for (long done = 0; done < a.solves;) {
+    std::vector<Mutant> chunk;
+    for (; done < a.solves && static_cast<long>(chunk.size()) < kSolveChunk; ++done)
+      chunk.push_back(next(files, seeds, done));
+    // The spec file's name: its default name when it has none (the check parses it so too).
+    const auto solveOne = [&](const Mutant& m, Tally& t) { checkSolve(o, m, "spec", t); };
+    checkIsolated(
+        chunk,
+        [&](const std::vector<Mutant>& rest, Tally& t) {
+          for (const Mutant& m : rest) solveOne(m, t);
+        },
+        solveOne, a.out / "tally", "solve", tally);
+    std::cerr << "\rsolve calls " << done << "/" << a.solves << ", failures "
+              << tally.failures() << std::flush;
   }
   std::cerr << "\n";
 
@@ -127,8 +228,7 @@ int main(int argc, char** argv) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "relpos mutation campaign: seed " << a.seed << ", " << a.lines << " batch lines in "
             << (a.lines + a.chunk - 1) / a.chunk << " batches, " << a.solves
-            << " solve calls, " << seconds << " s (in-process parse+solve+write: " << in_process_s
-            << " s)\n"
+            << " solve calls, " << seconds << " s\n"
             << tally.text(30) << "failures: " << tally.failures() << " (inputs in "
             << (a.out / "findings").string() << ")\n";
   return tally.failures() == 0 ? 0 : 1;

@@ -149,7 +149,7 @@ std::string Mutator::deepText() {
   int depth = static_cast<int>(2 + below(60));
   const double r = std::uniform_real_distribution<double>(0, 1)(rng_);
   if (r < options_.deep_share) {
-    depth = 100000;
+    depth = chance(0.5) ? 100000 : 300000;
   } else if (r < 0.1) {
     depth = std::vector<int>{100, 1000, 10000}[below(3)];
   }

@@ -28,8 +28,8 @@ std::vector<Seed> loadSeeds(const std::string& data_dir);
 
 struct MutationOptions {
   bool one_line = false;      // a JSONL line: never a raw newline, never blank
-  int max_depth = 10000;      // deepest nesting a mutation may write
-  double deep_share = 0.002;  // of mutations that nest, the share that nest 10⁵ deep
+  int max_depth = 10000;      // deepest nesting a mutation may write (up to 300000)
+  double deep_share = 0.002;  // of mutations that nest, the share that nest 10⁵ or 3×10⁵ deep
 };
 
 class Mutator {
