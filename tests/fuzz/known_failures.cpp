@@ -106,7 +106,8 @@ int nestingDepth(std::string_view text) {
 
 const KnownFailure* knownFailure(const Finding& f, std::string_view input) {
   if (strict()) return nullptr;
-  if ((f.kind == "wrong-answer" || f.kind == "bad-output") && holdsHugeNumber(input))
+  if ((f.kind == "wrong-answer" || f.kind == "bad-output" || f.kind == "bad-problem") &&
+      holdsHugeNumber(input))
     return &kSquareOverflow;
   if (f.kind == "split-diagnostic") return &kNewlineInDiagnostic;
   if ((f.kind == "crash" || f.kind == "hang") && nestingDepth(input) >= 100000)

@@ -339,6 +339,36 @@ void checkResultText(const std::string& text, const Problem& problem,
   ResultReader(problem, expect, out).read(text);
 }
 
+void checkProblem(const Problem& p, Findings& out) {
+  auto bad = [&](const std::string& what) { out.push_back({"bad-problem", what}); };
+  auto feature = [&](const Feature& f, const std::string& where) {
+    if (!f.point.allFinite() || !std::isfinite(f.radius)) bad(where + ": a number that is not finite");
+    if (f.kind != FeatureKind::kPoint && !(std::abs(f.direction.norm() - 1) <= 1e-9))
+      bad(where + ": a direction of length " + fmt(f.direction.norm()) + " (not unit)");
+    if (f.kind == FeatureKind::kCylinder && !(f.radius >= 0)) bad(where + ": a negative radius");
+  };
+  auto pose = [&](const Isometry3d& X, const std::string& where) {
+    if (!X.matrix().allFinite()) return bad(where + ": a pose that is not finite");
+    const Matrix3d R = X.linear();
+    if (!((R.transpose() * R - Matrix3d::Identity()).norm() <= 1e-9) || !(R.determinant() > 0))
+      bad(where + ": a pose that is not rigid");
+  };
+  for (const auto* o : {&p.fixed, &p.mobile}) {
+    const std::string side = o == &p.fixed ? "fixed" : "mobile";
+    pose(o->pose, side + ".pose");
+    for (const NamedFeature& f : o->features) feature(f.feature, side + ".features." + printable(f.name));
+  }
+  for (std::size_t i = 0; i < p.constraints.size(); ++i) {
+    const InputConstraint& c = p.constraints[i];
+    const std::string at = "constraints[" + std::to_string(i) + "]";
+    feature(c.fixed, at + ".fixed");
+    feature(c.mobile, at + ".mobile");
+    if (c.has_value && !std::isfinite(c.value)) bad(at + ": a value that is not finite");
+    if (std::isnan(c.min) || std::isnan(c.max))
+      bad(at + ": bounds [" + fmt(c.min) + ", " + fmt(c.max) + "]");
+  }
+}
+
 bool saysMalformedAt(std::string_view m) {
   constexpr std::string_view head = "malformed JSON at line ";
   if (m.substr(0, head.size()) != head) return false;
@@ -373,6 +403,7 @@ void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line) {
 
 void checkAccepted(std::string_view text, const ParseResult& r, Findings& out) {
   if (!r.problem) return;
+  checkProblem(*r.problem, out);
   // Up to the first NUL: what a reader that stops there has read (the rest it has not).
   const std::string_view read = text.substr(0, text.find('\0'));
   if (!isValidUtf8(read)) out.push_back({"accepted-invalid-json", "a spec that is not UTF-8 was read"});

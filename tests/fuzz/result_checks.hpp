@@ -19,7 +19,8 @@ namespace relpos::fuzz {
 // "bad-output" (not UTF-8 or JSON, a NaN/null where SPEC has a number, a field of the wrong
 // shape), "split-diagnostic" (a Diagnostic holding a newline), "pathless-message"; the CLI
 // checks add "split-message" (a stderr line that does not name the file), "crash", "hang", "exit-1",
-// "exit-code", "lost-line" and "slow"; checkAccepted "accepted-invalid-json".
+// "exit-code", "lost-line" and "slow"; checkAccepted "accepted-invalid-json", checkProblem
+// "bad-problem".
 struct Finding {
   std::string kind;
   std::string detail;
@@ -62,8 +63,15 @@ void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line = true)
 
 // A reader that gives a problem has read one JSON document (RFC 8259): the text is valid UTF-8
 // and holds no control character but tab, newline and carriage return (JSON allows them nowhere
-// else, raw) — in particular no NUL, after which a C-string reader would stop reading.
+// else, raw) — in particular no NUL, after which a C-string reader would stop reading — and the
+// problem it gives keeps checkProblem's promises.
 void checkAccepted(std::string_view text, const ParseResult& r, Findings& out);
+
+// What parsing promises of a Problem (feature.hpp, problem.hpp): every number finite, every
+// direction and normal of unit length, every pose rigid. A spec that breaks it should have been
+// refused: the solver and the checks above would otherwise reason about another problem (a
+// direction that overflowed to zero satisfies every constraint on it).
+void checkProblem(const Problem& p, Findings& out);
 
 // Whether a message (after "FILE: ") is "malformed JSON at line L, column C…".
 bool saysMalformedAt(std::string_view message);
