@@ -369,10 +369,16 @@ void checkProblem(const Problem& p, Findings& out) {
   }
 }
 
-bool saysMalformedAt(std::string_view m) {
-  constexpr std::string_view head = "malformed JSON at line ";
-  if (m.substr(0, head.size()) != head) return false;
-  std::size_t i = head.size();
+bool namesTheDocument(std::string_view m) {
+  if (m == "the spec must be a JSON object") return true;
+  std::size_t i = 0;
+  bool located = false;
+  for (std::string_view head : {"malformed JSON at line ", "too deeply nested at line "})
+    if (m.substr(0, head.size()) == head) {
+      i = head.size();
+      located = true;
+    }
+  if (!located) return false;
   auto digits = [&] {
     const std::size_t from = i;
     while (i < m.size() && m[i] >= '0' && m[i] <= '9') ++i;
@@ -396,7 +402,7 @@ void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line) {
       if (one_line && (d.path.find('\n') != std::string::npos ||
                        d.message.find('\n') != std::string::npos))
         out.push_back({"split-diagnostic", "a diagnostic holds a newline: " + shown});
-      if (d.path.empty() && !saysMalformedAt(d.message))
+      if (d.path.empty() && !namesTheDocument(d.message))
         out.push_back({"pathless-message", "no JSON path: " + shown});
     }
 }
