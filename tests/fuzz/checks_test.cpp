@@ -120,6 +120,10 @@ TEST(FuzzChecks, DiagnosticsMustBeOneLineWithAPath) {
   EXPECT_FALSE(namesTheDocument("malformed JSON: number overflow parsing '1e400'"));
   EXPECT_FALSE(namesTheDocument("malformed JSON at line , column 1"));
   EXPECT_FALSE(namesTheDocument("unknown field (ignored)"));
+  // The fuzzer's find: the document "1e400" (a root number beyond a double's range).
+  EXPECT_TRUE(namesTheDocument("number out of the range of a double '1e400' (line 1, column 1)"));
+  EXPECT_FALSE(namesTheDocument("number out of the range of a double '1e400' (line 1)"));
+  EXPECT_FALSE(namesTheDocument("number out of the range (line 1, column 1) of a double"));
 }
 
 TEST(FuzzChecks, AnAcceptedDocumentHoldingANulOrInvalidUtf8IsFlagged) {

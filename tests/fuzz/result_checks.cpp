@@ -369,26 +369,36 @@ void checkProblem(const Problem& p, Findings& out) {
   }
 }
 
-bool namesTheDocument(std::string_view m) {
-  if (m == "the spec must be a JSON object") return true;
-  std::size_t i = 0;
-  bool located = false;
-  for (std::string_view head : {"malformed JSON at line ", "too deeply nested at line "})
-    if (m.substr(0, head.size()) == head) {
-      i = head.size();
-      located = true;
-    }
-  if (!located) return false;
+namespace {
+
+// Whether m holds "line L, column C" from i on (i is moved past it).
+bool lineColumnAt(std::string_view m, std::size_t& i) {
+  auto word = [&](std::string_view w) {
+    if (m.substr(i, w.size()) != w) return false;
+    i += w.size();
+    return true;
+  };
   auto digits = [&] {
     const std::size_t from = i;
     while (i < m.size() && m[i] >= '0' && m[i] <= '9') ++i;
     return i > from;
   };
-  if (!digits()) return false;
-  constexpr std::string_view mid = ", column ";
-  if (m.substr(i, mid.size()) != mid) return false;
-  i += mid.size();
-  return digits();
+  return word("line ") && digits() && word(", column ") && digits();
+}
+
+}  // namespace
+
+bool namesTheDocument(std::string_view m) {
+  if (m == "the spec must be a JSON object") return true;
+  for (std::string_view head : {"malformed JSON at ", "too deeply nested at "}) {
+    std::size_t i = head.size();
+    if (m.substr(0, i) == head && lineColumnAt(m, i)) return true;
+  }
+  // "... (line L, column C)" at the end: a value (the root's path is the empty one) in the text.
+  const std::size_t open = m.rfind('(');
+  if (open == std::string_view::npos || m.back() != ')') return false;
+  std::size_t i = open + 1;
+  return lineColumnAt(m, i) && i == m.size() - 1;
 }
 
 void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line) {

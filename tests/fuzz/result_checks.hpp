@@ -73,9 +73,10 @@ void checkAccepted(std::string_view text, const ParseResult& r, Findings& out);
 // direction that overflowed to zero satisfies every constraint on it).
 void checkProblem(const Problem& p, Findings& out);
 
-// Whether a message (after "FILE: ") is about the document as a whole, which the empty JSON path
-// names: a place in its text ("malformed JSON at line L, column C: …", "too deeply nested at
-// line L, column C: …") or its root not being an object (docs/spec-additions.md).
+// Whether a message (after "FILE: ") with the empty JSON path is about the document as a whole
+// (whose path the empty one is) and says where: a place in its text ("malformed JSON at line L,
+// column C: …", "too deeply nested at line L, column C: …", "… '1e400' (line L, column C)" of a
+// root that is a number) or its root not being an object (docs/spec-additions.md).
 bool namesTheDocument(std::string_view message);
 
 // The first `n` characters of `s` with bytes outside printable ASCII as \xHH: quotable in a
