@@ -32,8 +32,8 @@ struct Written {
   std::string line;
 };
 Written workedExample() {
-  ParseResult r = parseSpec(slurp(RELPOS_DATA_DIR "/examples/pmf-simple-example.json"),
-                            builtinRegistry(), "x");
+  ParseResult r =
+      parseSpec(slurp(RELPOS_DATA_DIR "/examples/pmf-simple-example.json"), builtinRegistry(), "x");
   EXPECT_TRUE(r.problem);
   Written w{*r.problem, ""};
   const Solution s = solve(w.problem, builtinRegistry());
@@ -101,7 +101,8 @@ TEST(FuzzChecks, TextThatIsNotOneUtf8JsonDocumentIsBadOutput) {
 
 TEST(FuzzChecks, BranchesOfAResultThatIsNotSolvedAreBadOutput) {
   const Written w = workedExample();
-  const auto k = kinds(check(w, replaced(w.line, "\"status\":\"solved\"", "\"status\":\"unhandled\"")));
+  const auto k =
+      kinds(check(w, replaced(w.line, "\"status\":\"solved\"", "\"status\":\"unhandled\"")));
   EXPECT_NE(std::find(k.begin(), k.end(), "bad-output"), k.end());
 }
 

@@ -54,15 +54,16 @@ bool plain(const std::string& s) {
 }
 
 struct Ran {
-  int code = 0;     // exit status (when neither crashed nor hung)
-  int signal = 0;   // the signal that ended it (crashed)
+  int code = 0;    // exit status (when neither crashed nor hung)
+  int signal = 0;  // the signal that ended it (crashed)
   bool hung = false;
   double seconds = 0;
   std::string out, err;
 };
 
 // `relpos ARGS` under `timeout`, stdout and stderr captured in files of the scratch folder.
-Ran runRelpos(const CliOptions& o, const std::string& args, const std::string& name, int timeout_s) {
+Ran runRelpos(const CliOptions& o, const std::string& args, const std::string& name,
+              int timeout_s) {
   const fs::path out = o.dir / (name + ".out"), err = o.dir / (name + ".err");
   const std::string cmd = "timeout -k 10 " + std::to_string(timeout_s) + " '" + o.exe + "' " +
                           args + " >'" + out.string() + "' 2>'" + err.string() + "'";
@@ -74,8 +75,10 @@ Ran runRelpos(const CliOptions& o, const std::string& args, const std::string& n
     r.signal = WTERMSIG(status);
   } else {
     r.code = WEXITSTATUS(status);
-    if (r.code == 124 || r.code == 137) r.hung = true;  // timeout's TERM, then KILL
-    else if (r.code > 128) r.signal = r.code - 128;    // the shell's report of a signal
+    if (r.code == 124 || r.code == 137)
+      r.hung = true;  // timeout's TERM, then KILL
+    else if (r.code > 128)
+      r.signal = r.code - 128;  // the shell's report of a signal
   }
   r.out = slurp(out);
   r.err = slurp(err);
@@ -90,7 +93,8 @@ std::string tail(const std::string& s, std::size_t n = 600) {
 std::optional<Finding> processFailure(const Ran& r, std::initializer_list<int> allowed,
                                       int timeout_s) {
   if (r.hung) return Finding{"hang", "killed after " + std::to_string(timeout_s) + " s"};
-  if (r.signal) return Finding{"crash", "signal " + std::to_string(r.signal) + "; stderr: " + tail(r.err)};
+  if (r.signal)
+    return Finding{"crash", "signal " + std::to_string(r.signal) + "; stderr: " + tail(r.err)};
   if (r.code == 1) return Finding{"exit-1", "stderr: " + tail(r.err)};
   if (std::find(allowed.begin(), allowed.end(), r.code) == allowed.end())
     return Finding{"exit-code", "exit " + std::to_string(r.code) + "; stderr: " + tail(r.err)};
@@ -99,8 +103,8 @@ std::optional<Finding> processFailure(const Ran& r, std::initializer_list<int> a
 
 std::string batchArgs(const CliOptions& o, const fs::path& in, const fs::path& out) {
   return "batch '" + in.string() + "' --jobs " + std::to_string(o.jobs) + " --samples " +
-         std::to_string(o.samples) + " --seed " + std::to_string(o.seed) + " -o '" +
-         out.string() + "'";
+         std::to_string(o.samples) + " --seed " + std::to_string(o.seed) + " -o '" + out.string() +
+         "'";
 }
 
 std::string joinedLines(const std::vector<Mutant>& lines) {
@@ -120,8 +124,8 @@ std::optional<Finding> batchProcessFailure(const CliOptions& o, const std::vecto
 
 // Halves the lines [from, to) until the ones that make a batch fail on their own are found:
 // each is reported, its index added to `culprits`.
-void bisect(const CliOptions& o, const std::vector<Mutant>& lines, std::size_t from,
-            std::size_t to, const std::string& name, const Finding& failure, Tally& tally,
+void bisect(const CliOptions& o, const std::vector<Mutant>& lines, std::size_t from, std::size_t to,
+            const std::string& name, const Finding& failure, Tally& tally,
             std::vector<std::size_t>& culprits) {
   if (to - from == 1) {
     tally.add(failure, lines[from], "batch (one line)");
@@ -133,7 +137,8 @@ void bisect(const CliOptions& o, const std::vector<Mutant>& lines, std::size_t f
     const std::vector<Mutant> half(lines.begin() + static_cast<std::ptrdiff_t>(a),
                                    lines.begin() + static_cast<std::ptrdiff_t>(b));
     const std::string part = name + "-" + std::to_string(a);
-    if (auto f = batchProcessFailure(o, half, part)) bisect(o, lines, a, b, part, *f, tally, culprits);
+    if (auto f = batchProcessFailure(o, half, part))
+      bisect(o, lines, a, b, part, *f, tally, culprits);
   }
 }
 
@@ -157,11 +162,12 @@ void checkBatchLine(const CliOptions& o, const Mutant& in, const std::string& ou
   const std::string status = j["status"].get<std::string>();
   ++tally.statuses[status];
   if (!parsed.problem) {
-    if (status != "invalid") f.push_back({"exit-code", "an invalid spec's line says '" + status + "'"});
+    if (status != "invalid")
+      f.push_back({"exit-code", "an invalid spec's line says '" + status + "'"});
     const std::string message = j.value("message", std::string());
     if (!startsWith(message, source + ": "))
-      f.push_back({"pathless-message", "an invalid line's message does not start with '" +
-                                           source + ": ': " + printable(message)});
+      f.push_back({"pathless-message", "an invalid line's message does not start with '" + source +
+                                           ": ': " + printable(message)});
     for (const Diagnostic& d : parsed.errors)
       if (!d.path.empty() && plain(d.path) &&
           message.find(source + ": " + d.path + ": ") == std::string::npos)
@@ -295,9 +301,17 @@ std::string Tally::text(std::size_t max_reports) const {
     << in_process << "\nstatuses:";
   for (const auto& [k, n] : statuses) s << " " << k << " " << n;
   s << "\nfindings:";
-  static const std::vector<std::string> kinds = {
-      "crash",     "hang",       "wrong-answer", "exit-1",    "split-message",
-      "pathless-message", "split-diagnostic", "bad-output", "exit-code", "lost-line", "slow"};
+  static const std::vector<std::string> kinds = {"crash",
+                                                 "hang",
+                                                 "wrong-answer",
+                                                 "exit-1",
+                                                 "split-message",
+                                                 "pathless-message",
+                                                 "split-diagnostic",
+                                                 "bad-output",
+                                                 "exit-code",
+                                                 "lost-line",
+                                                 "slow"};
   for (const std::string& k : kinds) s << " " << k << " " << total(k);
   for (const auto& [k, n] : findings)  // any other kind
     if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) s << " " << k << " " << n;
@@ -307,8 +321,8 @@ std::string Tally::text(std::size_t max_reports) const {
   for (std::size_t i = 0; i < reports.size() && i < max_reports; ++i) {
     const Report& r = reports[i];
     s << "[" << r.finding.kind << "] " << r.command << ": " << r.finding.detail << "\n  from "
-      << r.input.origin << " by: " << printable(r.input.edits, 400) << "\n  input: "
-      << printable(r.input.text, 1500) << "\n";
+      << r.input.origin << " by: " << printable(r.input.edits, 400)
+      << "\n  input: " << printable(r.input.text, 1500) << "\n";
   }
   return s.str();
 }
@@ -352,7 +366,8 @@ std::optional<Finding> checkBatchOnce(const CliOptions& o, const std::vector<Mut
   // stderr: the summary ("batch: …" and its indented lines); anything else names the file.
   for (const std::string& line : linesOf(r.err))
     if (!startsWith(line, "batch: ") && !startsWith(line, "  ") && !startsWith(line, in.string()))
-      tally.add({"pathless-message", "batch stderr: " + printable(line)}, lines[0], "batch " + in.string());
+      tally.add({"pathless-message", "batch stderr: " + printable(line)}, lines[0],
+                "batch " + in.string());
   const std::vector<std::string> results = linesOf(slurp(out));
   if (results.size() != lines.size())
     tally.add({"lost-line", std::to_string(lines.size()) + " lines in, " +
@@ -370,8 +385,9 @@ double checkSolve(const CliOptions& o, const Mutant& spec, const std::string& na
   spit(file, spec.text);
   ++tally.solve_calls;
   const std::string where = "solve " + file.string();
-  const Ran r = runRelpos(o, "solve '" + file.string() + "' --samples " + std::to_string(o.samples) +
-                                 " --seed " + std::to_string(o.seed),
+  const Ran r = runRelpos(o,
+                          "solve '" + file.string() + "' --samples " + std::to_string(o.samples) +
+                              " --seed " + std::to_string(o.seed),
                           name, o.solve_timeout_s);
   tally.timed(r.seconds, where, spec, o.slow_s);
   if (auto failure = processFailure(r, {0, 2}, o.solve_timeout_s)) {
@@ -386,20 +402,24 @@ double checkSolve(const CliOptions& o, const Mutant& spec, const std::string& na
   const std::string head = file.string() + ": ";
   for (const std::string& line : err)
     if (!startsWith(line, head) || line.size() == head.size())
-      f.push_back({"split-message", "a stderr line that does not name the file: " + printable(line)});
+      f.push_back(
+          {"split-message", "a stderr line that does not name the file: " + printable(line)});
   if (err.size() != parsed.errors.size() + parsed.warnings.size())
     f.push_back({"split-message", std::to_string(parsed.errors.size() + parsed.warnings.size()) +
                                       " diagnostics on " + std::to_string(err.size()) +
                                       " stderr lines: " + printable(r.err)});
   if (!parsed.problem) {
     ++tally.statuses["invalid"];
-    if (r.code != 2) f.push_back({"exit-code", "exit " + std::to_string(r.code) + " for an invalid spec"});
+    if (r.code != 2)
+      f.push_back({"exit-code", "exit " + std::to_string(r.code) + " for an invalid spec"});
     if (!r.out.empty()) f.push_back({"bad-output", "an invalid spec wrote a result"});
     for (const Diagnostic& d : parsed.errors)
       if (!d.path.empty() && plain(d.path) && r.err.find(head + d.path + ": ") == std::string::npos)
-        f.push_back({"pathless-message", "stderr does not name '" + d.path + "': " + printable(r.err)});
+        f.push_back(
+            {"pathless-message", "stderr does not name '" + d.path + "': " + printable(r.err)});
   } else if (r.code != 0) {
-    f.push_back({"exit-code", "exit " + std::to_string(r.code) + " for a valid spec: " + tail(r.err)});
+    f.push_back(
+        {"exit-code", "exit " + std::to_string(r.code) + " for a valid spec: " + tail(r.err)});
   } else {
     const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
     if (!j.is_discarded() && j.is_object() && j.contains("status") && j["status"].is_string())
@@ -447,7 +467,8 @@ void checkSaved(const CliOptions& o, const fs::path& file, Tally& tally) {
   m.edits = "(saved)";
   const std::string name = file.stem().string();
   checkSolve(o, m, name, tally);
-  if (m.text.find('\n') == std::string::npos && m.text.find_first_not_of(" \t\r") != std::string::npos)
+  if (m.text.find('\n') == std::string::npos &&
+      m.text.find_first_not_of(" \t\r") != std::string::npos)
     checkBatch(o, {m}, name, tally);
   checkInProcess(m, o.samples, o.seed, tally);
 }

@@ -20,14 +20,14 @@ struct Mutant {
 };
 
 struct CliOptions {
-  std::string exe;             // the relpos executable
-  std::filesystem::path dir;   // a scratch folder of this run's own
-  int samples = 3;             // --samples
-  std::uint64_t seed = 7;      // --seed
-  int jobs = 2;                // batch --jobs
-  int batch_timeout_s = 600;   // a batch killed after this is a hang
-  int solve_timeout_s = 60;    // a solve killed after this is a hang
-  double slow_s = 1.0;         // a spec slower than this is "slow" (reported, not asserted)
+  std::string exe;            // the relpos executable
+  std::filesystem::path dir;  // a scratch folder of this run's own
+  int samples = 3;            // --samples
+  std::uint64_t seed = 7;     // --seed
+  int jobs = 2;               // batch --jobs
+  int batch_timeout_s = 600;  // a batch killed after this is a hang
+  int solve_timeout_s = 60;   // a solve killed after this is a hang
+  double slow_s = 1.0;        // a spec slower than this is "slow" (reported, not asserted)
 };
 
 // One finding with the input that caused it.

@@ -29,8 +29,8 @@ void JsonNode::erase(const std::string& key) {
 }
 
 std::string escapedBody(const std::string& s) {
-  const std::string quoted = nlohmann::json(s).dump(-1, ' ', false,
-                                                    nlohmann::json::error_handler_t::replace);
+  const std::string quoted =
+      nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return quoted.substr(1, quoted.size() - 2);
 }
 

@@ -4,10 +4,9 @@
 // strings as the bytes between their quotes (escapes, invalid UTF-8, raw control characters) and
 // verbatim text (a bracket nesting 10⁵ deep) — so that a mutated spec reaches the reader exactly
 // as a hostile file would.
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 namespace relpos::fuzz {
 
@@ -22,7 +21,9 @@ struct JsonNode {
 
   static JsonNode null() { return {}; }
   static JsonNode boolean(bool v) { return {Kind::kBool, v ? "true" : "false", {}, {}}; }
-  static JsonNode number(std::string literal) { return {Kind::kNumber, std::move(literal), {}, {}}; }
+  static JsonNode number(std::string literal) {
+    return {Kind::kNumber, std::move(literal), {}, {}};
+  }
   // A string whose quoted body is `body` (already escaped, or deliberately not).
   static JsonNode string(std::string body) { return {Kind::kString, std::move(body), {}, {}}; }
   static JsonNode raw(std::string text) { return {Kind::kRaw, std::move(text), {}, {}}; }

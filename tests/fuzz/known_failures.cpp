@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <string>
 #include <cstring>
+#include <string>
 
 namespace relpos::fuzz {
 namespace {

@@ -13,13 +13,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
-#include <functional>
-
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 
@@ -48,12 +47,18 @@ Args parse(int argc, char** argv) {
       std::exit(2);
     }
     const std::string v = argv[++i];
-    if (s == "--lines") a.lines = std::stol(v);
-    else if (s == "--solves") a.solves = std::stol(v);
-    else if (s == "--chunk") a.chunk = std::max(1L, std::stol(v));
-    else if (s == "--seed") a.seed = std::stoull(v);
-    else if (s == "--jobs") a.jobs = std::stoi(v);
-    else if (s == "--out") a.out = v;
+    if (s == "--lines")
+      a.lines = std::stol(v);
+    else if (s == "--solves")
+      a.solves = std::stol(v);
+    else if (s == "--chunk")
+      a.chunk = std::max(1L, std::stol(v));
+    else if (s == "--seed")
+      a.seed = std::stoull(v);
+    else if (s == "--jobs")
+      a.jobs = std::stoi(v);
+    else if (s == "--out")
+      a.out = v;
     else {
       std::cerr << "relpos_mutation_campaign: unknown option '" << s << "'\n";
       std::exit(2);
@@ -103,8 +108,8 @@ using CheckAll = std::function<void(const std::vector<Mutant>&, Tally&)>;
 using CheckOne = std::function<void(const Mutant&, Tally&)>;
 
 // The items of [from, to) that take a checking process down on their own.
-void locate(const std::vector<Mutant>& items, std::size_t from, std::size_t to,
-            const CheckOne& one, const fs::path& file, std::vector<std::size_t>& culprits,
+void locate(const std::vector<Mutant>& items, std::size_t from, std::size_t to, const CheckOne& one,
+            const fs::path& file, std::vector<std::size_t>& culprits,
             std::vector<std::string>& hows) {
   Tally scratch;
   std::string how;
@@ -143,7 +148,8 @@ void checkIsolated(std::vector<Mutant> items, const CheckAll& all, const CheckOn
     for (std::size_t k = culprits.size(); k-- > 0;) {
       tally.add({hows[k] == "hang" ? "hang" : "crash",
                  "checking it in-process (parseSpec, solve, writeResultLine) took the process "
-                 "down: " + hows[k]},
+                 "down: " +
+                     hows[k]},
                 items[culprits[k]], where);
       items.erase(items.begin() + static_cast<std::ptrdiff_t>(culprits[k]));
     }
@@ -184,8 +190,7 @@ int main(int argc, char** argv) {
           checkBatch(o, lines, name, t, &rest);
           for (std::size_t i = 0; i < rest.size(); ++i) {
             const double s = checkInProcess(rest[i], o.samples, o.seed, t);
-            t.timed(s, "in-process " + name + ".jsonl:" + std::to_string(i + 1), rest[i],
-                    o.slow_s);
+            t.timed(s, "in-process " + name + ".jsonl:" + std::to_string(i + 1), rest[i], o.slow_s);
           }
         },
         [&](const Mutant& m, Tally& t) { checkInProcess(m, o.samples, o.seed, t); },
@@ -208,8 +213,8 @@ int main(int argc, char** argv) {
           for (const Mutant& m : rest) solveOne(m, t);
         },
         solveOne, a.out / "tally", "solve", tally);
-    std::cerr << "\rsolve calls " << done << "/" << a.solves << ", failures "
-              << tally.failures() << std::flush;
+    std::cerr << "\rsolve calls " << done << "/" << a.solves << ", failures " << tally.failures()
+              << std::flush;
   }
   std::cerr << "\n";
 
@@ -220,15 +225,16 @@ int main(int argc, char** argv) {
     const std::string stem = std::to_string(i) + "-" + r.finding.kind;
     std::ofstream(a.out / "findings" / (stem + ".json"), std::ios::binary) << r.input.text;
     std::ofstream(a.out / "findings" / (stem + ".txt"))
-        << r.command << "\n" << r.finding.detail << "\nfrom " << r.input.origin << " by: "
-        << printable(r.input.edits, 2000) << "\n";
+        << r.command << "\n"
+        << r.finding.detail << "\nfrom " << r.input.origin
+        << " by: " << printable(r.input.edits, 2000) << "\n";
   }
   fs::remove_all(o.dir);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "relpos mutation campaign: seed " << a.seed << ", " << a.lines << " batch lines in "
-            << (a.lines + a.chunk - 1) / a.chunk << " batches, " << a.solves
-            << " solve calls, " << seconds << " s\n"
+            << (a.lines + a.chunk - 1) / a.chunk << " batches, " << a.solves << " solve calls, "
+            << seconds << " s\n"
             << tally.text(30) << "failures: " << tally.failures() << " (inputs in "
             << (a.out / "findings").string() << ")\n";
   return tally.failures() == 0 ? 0 : 1;

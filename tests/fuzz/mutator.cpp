@@ -1,8 +1,8 @@
 #include "mutator.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -30,18 +30,18 @@ void addSeed(const std::string& origin, const std::string& text, std::vector<See
 
 // Keys a spec uses (SPEC.md §1), for renaming a key into another meaningful one.
 const std::vector<std::string> kKeys = {
-    "relpos", "name",   "units",     "length",      "angle",    "fixed",    "mobile",
-    "pose",   "position", "orientation", "rpy",     "matrix",   "features", "point",
-    "line",   "plane",  "cylinder",  "direction",   "normal",   "radius",   "mesh",
-    "obstacles", "constraints", "type", "value",   "min",      "max",      "parallel",
-    "id",     "axis",   "Point",     "",            "point ",   "v\\u0061lue"};
-const std::vector<std::string> kTypes = {"distance", "angle",    "coincident", "parallel",
-                                         "perpendicular", "tangent", "thread", "symmetric",
-                                         "Distance", "",       "explodes", "coincident "};
-const std::vector<std::string> kOrientations = {"aligned", "opposed", "either", "Aligned",
-                                                "sideways", ""};
-const std::vector<std::string> kFeatureKinds = {"point", "line", "plane", "cylinder",
-                                                "sphere", "circle", "axis", "Line"};
+    "relpos",    "name",        "units",       "length",    "angle",  "fixed",      "mobile",
+    "pose",      "position",    "orientation", "rpy",       "matrix", "features",   "point",
+    "line",      "plane",       "cylinder",    "direction", "normal", "radius",     "mesh",
+    "obstacles", "constraints", "type",        "value",     "min",    "max",        "parallel",
+    "id",        "axis",        "Point",       "",          "point ", "v\\u0061lue"};
+const std::vector<std::string> kTypes = {"distance",      "angle",   "coincident", "parallel",
+                                         "perpendicular", "tangent", "thread",     "symmetric",
+                                         "Distance",      "",        "explodes",   "coincident "};
+const std::vector<std::string> kOrientations = {"aligned", "opposed",  "either",
+                                                "Aligned", "sideways", ""};
+const std::vector<std::string> kFeatureKinds = {"point",  "line",   "plane", "cylinder",
+                                                "sphere", "circle", "axis",  "Line"};
 
 // Numbers at and beyond the edges of what a double holds, and spellings JSON does not allow.
 const std::vector<std::string> kWeirdNumbers = {
@@ -57,15 +57,43 @@ const std::vector<std::string> kWeirdNumbers = {
 
 // Bytes a name or key may hold: non-ASCII, invalid UTF-8, control characters (raw, which JSON
 // forbids, and escaped, which JSON allows and the diagnostics must not print raw).
-const std::vector<std::string> kWeirdBytes = {
-    "\xC3\xA9",          // é
-    "\xF0\x9F\x98\x80",  // an emoji (4 bytes)
-    "\xE2\x80\xAE",      // right-to-left override
-    "\xEF\xBB\xBF",      // a byte-order mark
-    "\xFF", "\xFE", "\x80", "\xC3", "\xE2\x82", "\xC0\x80", "\xED\xA0\x80", "\xF4\x90\x80\x80",
-    "\x01", "\x1F", "\x7F", "\t", "\r", "\n", "\x1B[31m",
-    "\\n", "\\r", "\\t", "\\u0000", "\\u001b", "\\ud800", "\\udc00", "\\ud83d\\ude00", "\\u00e9",
-    "\\x41", "\\", "\\u12", "\"", ": ", "; ", ".", "[0]", "%s%n"};
+const std::vector<std::string> kWeirdBytes = {"\xC3\xA9",          // é
+                                              "\xF0\x9F\x98\x80",  // an emoji (4 bytes)
+                                              "\xE2\x80\xAE",      // right-to-left override
+                                              "\xEF\xBB\xBF",      // a byte-order mark
+                                              "\xFF",
+                                              "\xFE",
+                                              "\x80",
+                                              "\xC3",
+                                              "\xE2\x82",
+                                              "\xC0\x80",
+                                              "\xED\xA0\x80",
+                                              "\xF4\x90\x80\x80",
+                                              "\x01",
+                                              "\x1F",
+                                              "\x7F",
+                                              "\t",
+                                              "\r",
+                                              "\n",
+                                              "\x1B[31m",
+                                              "\\n",
+                                              "\\r",
+                                              "\\t",
+                                              "\\u0000",
+                                              "\\u001b",
+                                              "\\ud800",
+                                              "\\udc00",
+                                              "\\ud83d\\ude00",
+                                              "\\u00e9",
+                                              "\\x41",
+                                              "\\",
+                                              "\\u12",
+                                              "\"",
+                                              ": ",
+                                              "; ",
+                                              ".",
+                                              "[0]",
+                                              "%s%n"};
 
 }  // namespace
 
@@ -127,8 +155,7 @@ std::vector<Mutator::Slot> Mutator::slots(JsonNode& root) {
 std::string Mutator::weirdNumber() {
   if (chance(0.3)) {  // an ordinary value: another problem, often still valid
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g",
-                  std::uniform_real_distribution<double>(-5, 5)(rng_));
+    std::snprintf(buf, sizeof buf, "%.6g", std::uniform_real_distribution<double>(-5, 5)(rng_));
     return buf;
   }
   return pick(kWeirdNumbers);
@@ -206,8 +233,7 @@ JsonNode Mutator::randomFeature() {
     JsonNode a = JsonNode::array();
     for (int i = 0; i < 3; ++i) {
       char buf[32];
-      std::snprintf(buf, sizeof buf, "%.3g",
-                    std::uniform_real_distribution<double>(-1, 1)(rng_));
+      std::snprintf(buf, sizeof buf, "%.3g", std::uniform_real_distribution<double>(-1, 1)(rng_));
       a.items.push_back(JsonNode::number(odd && chance(0.3) ? weirdNumber() : buf));
     }
     return a;
@@ -236,8 +262,12 @@ bool Mutator::mutateTree(JsonNode& root, std::string& what) {
       if (accept(s)) ok.push_back(&s);
     return ok.empty() ? nullptr : ok[below(ok.size())];
   };
-  auto objects = [&](const Slot& s) { return s.node->kind == Kind::kObject && !s.node->items.empty(); };
-  auto arrays = [&](const Slot& s) { return s.node->kind == Kind::kArray && !s.node->items.empty(); };
+  auto objects = [&](const Slot& s) {
+    return s.node->kind == Kind::kObject && !s.node->items.empty();
+  };
+  auto arrays = [&](const Slot& s) {
+    return s.node->kind == Kind::kArray && !s.node->items.empty();
+  };
   JsonNode* constraints = root.member("constraints");
   auto aConstraint = [&]() -> JsonNode* {
     if (!constraints || constraints->kind != Kind::kArray || constraints->items.empty())
@@ -265,8 +295,8 @@ bool Mutator::mutateTree(JsonNode& root, std::string& what) {
   // number moved a little or a lot, another type, feature, orientation, value, constraint,
   // pose) are picked more often than the others, so that about half the mutants reach the
   // solver; numbers moved by 1e-15 … 1e-4 of themselves make near-degenerate geometry.
-  static const std::vector<std::size_t> kKeepsValid = {6, 16, 17, 18, 19, 20, 21, 22, 23,
-                                                       24, 25, 26, 27, 30, 30, 30};
+  static const std::vector<std::size_t> kKeepsValid = {6,  16, 17, 18, 19, 20, 21, 22,
+                                                       23, 24, 25, 26, 27, 30, 30, 30};
   switch (chance(0.5) ? kKeepsValid[below(kKeepsValid.size())] : below(31)) {
     case 30: {  // a number moved by a small or large fraction of itself
       Slot* s = anyWhere([](const Slot& x) { return x.node->kind == Kind::kNumber; });
@@ -378,15 +408,25 @@ bool Mutator::mutateTree(JsonNode& root, std::string& what) {
     }
     case 13: {  // a whole vector: zero, huge or tiny components, wrong length
       Slot* s = anyWhere([](const Slot& x) {
-        return x.node->kind == Kind::kArray && (x.node->items.size() == 3 || x.node->items.size() == 4);
+        return x.node->kind == Kind::kArray &&
+               (x.node->items.size() == 3 || x.node->items.size() == 4);
       });
       if (!s) return false;
-      static const std::vector<std::vector<std::string>> vectors = {
-          {"0", "0", "0"},        {"0", "0", "0", "0"},   {"1e300", "1e300", "0"},
-          {"1e200", "0", "1"},    {"2e154", "2e154", "2e154"}, {"1e-300", "0", "0"},
-          {"1e-300", "1e-300", "1e-300"}, {"5e-324", "0", "0"}, {"1e160", "1", "0", "0"},
-          {"0", "0", "1e-200", "0"}, {"1", "1e-17", "0"}, {"1", "2"}, {"1", "2", "3", "4", "5"},
-          {"-0", "-0", "-1"},      {"1e308", "1e308", "1e308"}};
+      static const std::vector<std::vector<std::string>> vectors = {{"0", "0", "0"},
+                                                                    {"0", "0", "0", "0"},
+                                                                    {"1e300", "1e300", "0"},
+                                                                    {"1e200", "0", "1"},
+                                                                    {"2e154", "2e154", "2e154"},
+                                                                    {"1e-300", "0", "0"},
+                                                                    {"1e-300", "1e-300", "1e-300"},
+                                                                    {"5e-324", "0", "0"},
+                                                                    {"1e160", "1", "0", "0"},
+                                                                    {"0", "0", "1e-200", "0"},
+                                                                    {"1", "1e-17", "0"},
+                                                                    {"1", "2"},
+                                                                    {"1", "2", "3", "4", "5"},
+                                                                    {"-0", "-0", "-1"},
+                                                                    {"1e308", "1e308", "1e308"}};
       const auto& v = vectors[below(vectors.size())];
       s->node->items.clear();
       std::string text;
@@ -397,7 +437,8 @@ bool Mutator::mutateTree(JsonNode& root, std::string& what) {
     case 14:
     case 15: {  // a string (names) or a key gets odd bytes
       Slot* s = anyWhere([](const Slot& x) {
-        return x.node->kind == Kind::kString || (x.node->kind == Kind::kObject && !x.node->keys.empty());
+        return x.node->kind == Kind::kString ||
+               (x.node->kind == Kind::kObject && !x.node->keys.empty());
       });
       if (!s) return false;
       std::string& target = s->node->kind == Kind::kString

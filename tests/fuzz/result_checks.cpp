@@ -105,7 +105,8 @@ class ResultReader {
                          fmt(*first_min) + ")");
     }
     for (const std::string& at : nulls_)
-      if (!allowed_nulls_.count(at)) bad(at, "null (a NaN or infinity written) where SPEC has a number");
+      if (!allowed_nulls_.count(at))
+        bad(at, "null (a NaN or infinity written) where SPEC has a number");
   }
 
  private:
@@ -153,12 +154,14 @@ class ResultReader {
         b["parameters"].size() != static_cast<std::size_t>(dof))
       return bad(at + "/parameters", "missing or not dof long"), none;
     std::vector<Bounds> bounds;
-    for (int i = 0; i < dof; ++i) bounds.push_back(parameter(b["parameters"][i], at + "/parameters/" + std::to_string(i)));
+    for (int i = 0; i < dof; ++i)
+      bounds.push_back(parameter(b["parameters"][i], at + "/parameters/" + std::to_string(i)));
     if (!b.contains("nearest")) return bad(at + "/nearest", "missing"), none;
     const json& n = b["nearest"];
     const auto X = pose(n, at + "/nearest", bounds);
     double d = none;
-    if (!n.contains("distance") || !n["distance"].is_number() || !(n["distance"].get<double>() >= 0)) {
+    if (!n.contains("distance") || !n["distance"].is_number() ||
+        !(n["distance"].get<double>() >= 0)) {
       bad(at + "/nearest/distance", "missing or not a non-negative number");
     } else {
       d = n["distance"].get<double>();
@@ -206,7 +209,8 @@ class ResultReader {
         (side[1] == 'i' ? bounds.min : bounds.max) = p[side].get<double>();
       }
     }
-    if (!(bounds.min <= bounds.max)) bad(at, "min " + fmt(bounds.min) + " > max " + fmt(bounds.max));
+    if (!(bounds.min <= bounds.max))
+      bad(at, "min " + fmt(bounds.min) + " > max " + fmt(bounds.max));
     if (!p.contains("periodic") || !p["periodic"].is_boolean())
       bad(at + "/periodic", "missing or not a boolean");
     else
@@ -342,7 +346,8 @@ void checkResultText(const std::string& text, const Problem& problem,
 void checkProblem(const Problem& p, Findings& out) {
   auto bad = [&](const std::string& what) { out.push_back({"bad-problem", what}); };
   auto feature = [&](const Feature& f, const std::string& where) {
-    if (!f.point.allFinite() || !std::isfinite(f.radius)) bad(where + ": a number that is not finite");
+    if (!f.point.allFinite() || !std::isfinite(f.radius))
+      bad(where + ": a number that is not finite");
     if (f.kind != FeatureKind::kPoint && !(std::abs(f.direction.norm() - 1) <= 1e-9))
       bad(where + ": a direction of length " + fmt(f.direction.norm()) + " (not unit)");
     if (f.kind == FeatureKind::kCylinder && !(f.radius >= 0)) bad(where + ": a negative radius");
@@ -356,7 +361,8 @@ void checkProblem(const Problem& p, Findings& out) {
   for (const auto* o : {&p.fixed, &p.mobile}) {
     const std::string side = o == &p.fixed ? "fixed" : "mobile";
     pose(o->pose, side + ".pose");
-    for (const NamedFeature& f : o->features) feature(f.feature, side + ".features." + printable(f.name));
+    for (const NamedFeature& f : o->features)
+      feature(f.feature, side + ".features." + printable(f.name));
   }
   for (std::size_t i = 0; i < p.constraints.size(); ++i) {
     const InputConstraint& c = p.constraints[i];
@@ -409,8 +415,8 @@ void checkDiagnostics(const ParseResult& r, Findings& out, bool one_line) {
   for (const auto* list : {&r.errors, &r.warnings})
     for (const Diagnostic& d : *list) {
       const std::string shown = "'" + printable(d.path) + "': '" + printable(d.message) + "'";
-      if (one_line && (d.path.find('\n') != std::string::npos ||
-                       d.message.find('\n') != std::string::npos))
+      if (one_line &&
+          (d.path.find('\n') != std::string::npos || d.message.find('\n') != std::string::npos))
         out.push_back({"split-diagnostic", "a diagnostic holds a newline: " + shown});
       if (d.path.empty() && !namesTheDocument(d.message))
         out.push_back({"pathless-message", "no JSON path: " + shown});
@@ -422,7 +428,8 @@ void checkAccepted(std::string_view text, const ParseResult& r, Findings& out) {
   checkProblem(*r.problem, out);
   // Up to the first NUL: what a reader that stops there has read (the rest it has not).
   const std::string_view read = text.substr(0, text.find('\0'));
-  if (!isValidUtf8(read)) out.push_back({"accepted-invalid-json", "a spec that is not UTF-8 was read"});
+  if (!isValidUtf8(read))
+    out.push_back({"accepted-invalid-json", "a spec that is not UTF-8 was read"});
   for (std::size_t i = 0; i < read.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(read[i]);
     if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {

@@ -18,9 +18,9 @@ namespace relpos::fuzz {
 // One broken invariant. Kinds: "wrong-answer" (a reported pose violates a constraint),
 // "bad-output" (not UTF-8 or JSON, a NaN/null where SPEC has a number, a field of the wrong
 // shape), "split-diagnostic" (a Diagnostic holding a newline), "pathless-message"; the CLI
-// checks add "split-message" (a stderr line that does not name the file), "crash", "hang", "exit-1",
-// "exit-code", "lost-line" and "slow"; checkAccepted "accepted-invalid-json", checkProblem
-// "bad-problem".
+// checks add "split-message" (a stderr line that does not name the file), "crash", "hang",
+// "exit-1", "exit-code", "lost-line" and "slow"; checkAccepted "accepted-invalid-json",
+// checkProblem "bad-problem".
 struct Finding {
   std::string kind;
   std::string detail;
@@ -47,8 +47,8 @@ Problem scaledProblem(const Problem& p, double size);
 bool isValidUtf8(std::string_view s);
 
 struct ResultExpectation {
-  int samples = 0;        // poses per branch asked for
-  bool one_line = true;   // a result line (batch, writeResultLine); false: `solve`'s document
+  int samples = 0;         // poses per branch asked for
+  bool one_line = true;    // a result line (batch, writeResultLine); false: `solve`'s document
   bool name_known = true;  // the result's "name" must be the problem's name
 };
 

@@ -10,10 +10,10 @@
 #include <set>
 #include <string>
 
+#include "known_failures.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "relpos/rules/builtin.hpp"
-#include "known_failures.hpp"
 #include "result_checks.hpp"
 
 namespace {
@@ -77,6 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (fresh.empty()) return 0;
   if (parsed.problem)
-    std::fprintf(stderr, "relpos_spec_fuzzer: the result: %s\n", fuzz::printable(line, 4000).c_str());
+    std::fprintf(stderr, "relpos_spec_fuzzer: the result: %s\n",
+                 fuzz::printable(line, 4000).c_str());
   fail(fresh);
 }
