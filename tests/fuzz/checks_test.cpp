@@ -188,6 +188,13 @@ TEST(FuzzKnownFailures, MatchOnlyWhatTheyName) {
   const KnownFailure* k = knownFailure({"bad-output", "/branches/0/nearest/distance: null"}, huge);
   EXPECT_EQ(k == nullptr, strict);  // and RELPOS_FUZZ_STRICT=1 makes it a failure again
   EXPECT_EQ(knownFailure({"bad-output", "/branches/0/nearest/distance: null"}, "{}"), nullptr);
+  // A wrong answer far from the origin (the angle floor), never one at an ordinary size.
+  const std::string far = "/branches/0/nearest: violates constraints[1] (distance front palm) by ";
+  EXPECT_EQ(knownFailure({"wrong-answer", far + "1.5 (relative to the problem's size 1e15)"}, "") ==
+                nullptr,
+            strict);
+  EXPECT_EQ(knownFailure({"wrong-answer", far + "1.5 (relative to the problem's size 7)"}, ""),
+            nullptr);
 }
 
 }  // namespace
