@@ -8,7 +8,13 @@
 
 namespace relpos::detail {
 
+// A key that is the empty string is spelled [""]: joined by '.' it would vanish, and a member ""
+// of the spec itself would be named by the empty path, which is the document's.
 inline void appendPathKey(std::string& path, std::string_view key) {
+  if (key.empty()) {
+    path += "[\"\"]";
+    return;
+  }
   if (!path.empty()) path += '.';
   path += key;
 }

@@ -27,7 +27,7 @@ class Path {
     std::string s = parent_ != nullptr ? parent_->str() : std::string();
     if (indexed_)
       appendPathIndex(s, index_);
-    else
+    else if (parent_ != nullptr || !key_.empty())  // the root "" is the document: no component
       appendPathKey(s, key_);
     return s;
   }

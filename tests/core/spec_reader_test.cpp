@@ -281,6 +281,18 @@ TEST(SpecReader, KeysTwiceInAnObjectAreErrorsAtTheirPath) {
   }
 }
 
+// A member named "" has a path of its own: joined by '.' it would vanish, and at the top level
+// its warning would name the empty path, the document's.
+TEST(SpecReader, AnEmptyKeyIsNamedInThePath) {
+  const ParseResult top = parse(edited("\"relpos\": 1,", "\"relpos\": 1, \"\": 0,"));
+  ASSERT_TRUE(top.problem) << all(top.errors);
+  ASSERT_FALSE(top.warnings.empty());
+  EXPECT_EQ(top.warnings[0].path, "[\"\"]");
+  EXPECT_EQ(top.warnings[0].message, "unknown field (ignored)");
+  const ParseResult twice = parse(edited("{\"b\": 1}", "{\"\": {\"\": 1, \"\": 2}}"));
+  EXPECT_EQ(duplicatePaths(twice), std::vector<std::string>{"extra.a[1][\"\"][\"\"]"});
+}
+
 // A feature named "C.axis" beside a cylinder "C" would make the name "C.axis" mean two things.
 TEST(SpecReader, AFeatureNamedLikeACylinderAxisIsAmbiguous) {
   const std::string cylinder = R"("C": {"cylinder": {"point": [0, 0, 0], "direction": [0, 0, 1],

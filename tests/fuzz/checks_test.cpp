@@ -1,0 +1,201 @@
+// The fuzzing checks checked on their own: each flags what it is there to flag (a checker that
+// flags nothing would let the mutation test and the fuzzer pass whatever relpos does), and the
+// mutator is deterministic.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "known_failures.hpp"
+#include "mutator.hpp"
+#include "relpos/core/solver.hpp"
+#include "relpos/rules/builtin.hpp"
+#include "result_checks.hpp"
+#include "test_config.hpp"
+
+namespace relpos::fuzz {
+namespace {
+
+std::string slurp(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The pmf worked example (one 1-DOF branch), parsed, solved and written with 3 samples.
+struct Written {
+  Problem problem;
+  std::string line;
+};
+Written workedExample() {
+  ParseResult r =
+      parseSpec(slurp(RELPOS_DATA_DIR "/examples/pmf-simple-example.json"), builtinRegistry(), "x");
+  EXPECT_TRUE(r.problem);
+  Written w{*r.problem, ""};
+  const Solution s = solve(w.problem, builtinRegistry());
+  ResultOptions o;
+  o.samples = 3;
+  writeResultLine(w.problem, s, o, w.line);
+  return w;
+}
+
+std::vector<std::string> kinds(const Findings& f) {
+  std::vector<std::string> k;
+  for (const Finding& x : f) k.push_back(x.kind);
+  return k;
+}
+
+Findings check(const Written& w, const std::string& line) {
+  Findings f;
+  ResultExpectation e;
+  e.samples = 3;
+  checkResultText(line, w.problem, e, f);
+  return f;
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? s : s.replace(at, from.size(), to);
+}
+
+TEST(FuzzChecks, ACorrectResultPasses) {
+  const Written w = workedExample();
+  EXPECT_TRUE(check(w, w.line).empty()) << kinds(check(w, w.line))[0];
+}
+
+TEST(FuzzChecks, AMovedPoseIsAWrongAnswer) {
+  const Written w = workedExample();
+  // The nearest pose's x moved by 1e-3 (the problem's size is 7: 1.4e-4 of it, above 1e-6).
+  const std::string at = "\"position\":[";
+  const std::size_t from = w.line.find(at) + at.size(), to = w.line.find(',', from);
+  const double x = std::stod(w.line.substr(from, to - from));
+  char moved[40];
+  std::snprintf(moved, sizeof moved, "%.17g", x + 1e-3);
+  const auto k = kinds(check(w, w.line.substr(0, from) + moved + w.line.substr(to)));
+  EXPECT_NE(std::find(k.begin(), k.end(), "wrong-answer"), k.end());
+}
+
+TEST(FuzzChecks, ANullWhereSpecHasANumberIsBadOutput) {
+  const Written w = workedExample();
+  const auto k = kinds(check(w, replaced(w.line, "\"parameters\":[", "\"parameters\":[null,")));
+  EXPECT_NE(std::find(k.begin(), k.end(), "bad-output"), k.end());
+  // A null bound on an angle (SPEC allows it on unbounded lengths only).
+  const auto a = kinds(check(w, replaced(w.line, "\"min\":-3.141592653589793", "\"min\":null")));
+  EXPECT_NE(std::find(a.begin(), a.end(), "bad-output"), a.end());
+}
+
+TEST(FuzzChecks, TextThatIsNotOneUtf8JsonDocumentIsBadOutput) {
+  const Written w = workedExample();
+  for (const std::string& bad : {w.line + "x", w.line.substr(0, w.line.size() - 1),
+                                 replaced(w.line, "\"name\":\"", "\"name\":\"\xFF"),
+                                 replaced(w.line, "\"message\":\"", "\"message\":\"\xC0\x80")}) {
+    const auto k = kinds(check(w, bad));
+    EXPECT_NE(std::find(k.begin(), k.end(), "bad-output"), k.end()) << printable(bad, 80);
+  }
+}
+
+TEST(FuzzChecks, BranchesOfAResultThatIsNotSolvedAreBadOutput) {
+  const Written w = workedExample();
+  const auto k =
+      kinds(check(w, replaced(w.line, "\"status\":\"solved\"", "\"status\":\"unhandled\"")));
+  EXPECT_NE(std::find(k.begin(), k.end(), "bad-output"), k.end());
+}
+
+TEST(FuzzChecks, DiagnosticsMustBeOneLineWithAPath) {
+  ParseResult r;
+  r.errors.push_back({"constraints[0]", "one\ntwo"});
+  r.errors.push_back({"", "unknown field (ignored)"});
+  r.errors.push_back({"", "the spec must be a JSON object"});
+  r.errors.push_back({"", "malformed JSON at line 3, column 14: unexpected '}'"});
+  Findings f;
+  checkDiagnostics(r, f);
+  ASSERT_EQ(kinds(f), (std::vector<std::string>{"split-diagnostic", "pathless-message"}));
+  EXPECT_TRUE(namesTheDocument("malformed JSON at line 1, column 1"));
+  EXPECT_TRUE(namesTheDocument("too deeply nested at line 1, column 1025: more than 1024 …"));
+  EXPECT_TRUE(namesTheDocument("the spec must be a JSON object"));
+  EXPECT_FALSE(namesTheDocument("malformed JSON: number overflow parsing '1e400'"));
+  EXPECT_FALSE(namesTheDocument("malformed JSON at line , column 1"));
+  EXPECT_FALSE(namesTheDocument("unknown field (ignored)"));
+  // The fuzzer's find: the document "1e400" (a root number beyond a double's range).
+  EXPECT_TRUE(namesTheDocument("number out of the range of a double '1e400' (line 1, column 1)"));
+  EXPECT_FALSE(namesTheDocument("number out of the range of a double '1e400' (line 1)"));
+  EXPECT_FALSE(namesTheDocument("number out of the range (line 1, column 1) of a double"));
+}
+
+TEST(FuzzChecks, AnAcceptedDocumentHoldingANulOrInvalidUtf8IsFlagged) {
+  ParseResult ok;
+  ok.problem = Problem();
+  for (const std::string& text : {std::string("{}\0x", 4), std::string("{\"a\":\"\xFF\"}"),
+                                  std::string("{\"a\":\"\x01\"}")}) {
+    Findings f;
+    checkAccepted(text, ok, f);
+    EXPECT_EQ(kinds(f), std::vector<std::string>{"accepted-invalid-json"}) << printable(text);
+  }
+  Findings none;
+  checkAccepted("{\"a\":\"\xC3\xA9\"}\n\t\r", ok, none);
+  EXPECT_TRUE(none.empty());
+}
+
+TEST(FuzzChecks, Utf8Validation) {
+  EXPECT_TRUE(isValidUtf8("a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"));
+  for (const char* bad : {"\xFF", "\xC3", "\xC0\x80", "\xED\xA0\x80", "\xF4\x90\x80\x80", "\x80"})
+    EXPECT_FALSE(isValidUtf8(bad)) << printable(bad);
+}
+
+TEST(FuzzChecks, TheScaledProblemMeasuresLengthsInItsSize) {
+  Problem p;
+  p.addFixedFeature("a", Feature::makePoint({2000, 0, 0}));
+  p.addMobileFeature("b", Feature::makePoint({0, 0, 0}));
+  p.addConstraint("distance", "a", "b", 1000);
+  EXPECT_EQ(problemSize(p), 2000);
+  const Problem s = scaledProblem(p, 2000);
+  EXPECT_EQ(s.constraints[0].fixed.point.x(), 1.0);
+  EXPECT_EQ(s.constraints[0].value, 0.5);
+}
+
+TEST(FuzzMutator, TheSameSeedGivesTheSameMutants) {
+  const std::vector<Seed> seeds = loadSeeds(RELPOS_DATA_DIR);
+  ASSERT_FALSE(seeds.empty());
+  MutationOptions o;
+  o.one_line = true;
+  Mutator a(5, o), b(5, o);
+  for (int i = 0; i < 200; ++i) {
+    const JsonNode& seed = seeds[static_cast<std::size_t>(i) % seeds.size()].tree;
+    const std::string x = a.mutate(seed, "n"), y = b.mutate(seed, "n");
+    ASSERT_EQ(x, y) << i;
+    EXPECT_EQ(x.find('\n'), std::string::npos) << i;  // a JSONL line stays one line
+  }
+}
+
+TEST(FuzzKnownFailures, MatchOnlyWhatTheyName) {
+  // Only the listed failures are tolerated: a wrong answer on ordinary input is never "known",
+  // nor are the failures main has fixed (deep nesting, pathless messages, a NUL in the text).
+  EXPECT_EQ(knownFailure({"wrong-answer", "violates constraints[0]"}, "{\"relpos\":1}"), nullptr);
+  EXPECT_EQ(knownFailure({"crash", "signal 11"}, std::string(300000, '[')), nullptr);
+  EXPECT_EQ(knownFailure({"pathless-message", "no JSON path: '': 'unknown field (ignored)'"}, ""),
+            nullptr);
+  // The infinite nearest distance of a huge initial pose: its two fields, nothing else.
+  const std::string huge = "{\"mobile\":{\"pose\":{\"position\":[-1e300,0,0]}}}";
+  EXPECT_EQ(knownFailure({"wrong-answer", "violates constraints[0]"}, huge), nullptr);
+  EXPECT_EQ(knownFailure({"bad-output", "/branches/0/parameters/0/min: null"}, huge), nullptr);
+  const bool strict = std::getenv("RELPOS_FUZZ_STRICT") && *std::getenv("RELPOS_FUZZ_STRICT") &&
+                      std::string(std::getenv("RELPOS_FUZZ_STRICT")) != "0";
+  const KnownFailure* k = knownFailure({"bad-output", "/branches/0/nearest/distance: null"}, huge);
+  EXPECT_EQ(k == nullptr, strict);  // and RELPOS_FUZZ_STRICT=1 makes it a failure again
+  EXPECT_EQ(knownFailure({"bad-output", "/branches/0/nearest/distance: null"}, "{}"), nullptr);
+  // A wrong answer far from the origin (the angle floor), never one at an ordinary size.
+  const std::string far = "/branches/0/nearest: violates constraints[1] (distance front palm) by ";
+  EXPECT_EQ(knownFailure({"wrong-answer", far + "1.5 (relative to the problem's size 1e15)"}, "") ==
+                nullptr,
+            strict);
+  EXPECT_EQ(knownFailure({"wrong-answer", far + "1.5 (relative to the problem's size 7)"}, ""),
+            nullptr);
+}
+
+}  // namespace
+}  // namespace relpos::fuzz
