@@ -97,6 +97,20 @@ Ang snap(const Fundamental& x, const Tolerance& given) {
 // An angle of 0 or π (after snap() and the flips below, which turn 0 into π).
 bool isParallelism(const Ang& x) { return x.a == 0 || x.a == kPi; }
 
+// A parallelism that alone fixes the other constraint's angle at `implied`: that constraint is
+// redundant, or the pair incompatible. `first_is_parallelism`: which of the pair is redundant.
+void parallelismFixes(double implied, double angle, bool first_is_parallelism, const Tolerance& tol,
+                      RuleOutput& out) {
+  if (tol.equalAngle(implied, angle)) {
+    out.fire(kParallelFixes);
+    return first_is_parallelism ? out.redundantSecond() : out.redundantFirst();
+  }
+  return out.fire(kIncompatible)
+      .incompatible(
+          "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
+          "Table X)");
+}
+
 void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& given,
                RuleOutput& out) {
   Ang a = snap(fa, given), b = snap(fb, given);
@@ -134,14 +148,7 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
       const Ang& par = pa ? a : b;
       const Ang& other = pa ? b : a;
       const Vector3d dir = par.a == 0 ? par.f : Vector3d(-par.f);
-      if (tol.equalAngle(angleBetween(dir, other.f), other.a)) {
-        out.fire(kParallelFixes);
-        return pa ? out.redundantSecond() : out.redundantFirst();
-      }
-      return out.fire(kIncompatible)
-          .incompatible(
-              "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
-              "Table X)");
+      return parallelismFixes(angleBetween(dir, other.f), other.a, pa, tol, out);
     }
     Vector3d s[2];
     double err = 0.0, gain = 1.0;
@@ -172,15 +179,7 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
   const double sf = angleBetween(par.f, ang.f);
   if (sf <= tol.angle || sf >= kPi - tol.angle) {
     // v_f ∥ ±u_f: the angle is fixed by the parallelism alone.
-    const double implied = sf <= tol.angle ? sm : kPi - sm;
-    if (tol.equalAngle(implied, ang.a)) {
-      out.fire(kParallelFixes);
-      return pa ? out.redundantSecond() : out.redundantFirst();
-    }
-    return out.fire(kIncompatible)
-        .incompatible(
-            "a parallelism fixes the angle of the other constraint to another value (PMF App. IV "
-            "Table X)");
+    return parallelismFixes(sf <= tol.angle ? sm : kPi - sm, ang.a, pa, tol, out);
   }
   Vector3d s[2];
   double err = 0.0, gain = 1.0;

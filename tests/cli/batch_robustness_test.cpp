@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli_run.hpp"
+#include "json_lines.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
@@ -14,19 +15,6 @@ namespace {
 const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
 const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
 const std::string kReplacementCharacter = "\xEF\xBF\xBD";  // U+FFFD
-
-// The lines of a batch's output, parsed; nlohmann refuses a line that is not valid UTF-8.
-std::vector<nlohmann::json> parsedLines(const std::string& text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    EXPECT_FALSE(j.is_discarded()) << "not a JSON line in UTF-8: " << line.substr(0, 200);
-    lines.push_back(j);
-  }
-  return lines;
-}
 
 TEST(CliBatchRobustness, MalformedLinesWithAnyBytesAreInvalidLines) {
   const std::string bad[] = {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli_run.hpp"
+#include "json_lines.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
@@ -27,19 +28,6 @@ std::set<std::string> filesIn(const fs::path& d) {
   std::set<std::string> names;
   for (const auto& e : fs::directory_iterator(d)) names.insert(e.path().filename().string());
   return names;
-}
-
-// The lines of a batch's output, each parsed (a line that is not JSON fails the test).
-std::vector<nlohmann::json> parsedLines(const std::string& text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    EXPECT_FALSE(j.is_discarded()) << "not a whole JSON line: " << line.substr(0, 200);
-    lines.push_back(j);
-  }
-  return lines;
 }
 
 // root ignores permissions: a read-only folder is tested as nobody.
