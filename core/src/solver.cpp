@@ -109,7 +109,7 @@ double derivedErr(const RuleOutput& out) {
   return e;
 }
 bool tooUncertain(const RuleOutput& out) { return !(derivedErr(out) <= kMaxDerivedErr); }
-std::string formatAngle(const RuleOutput& out) {
+std::string derivedErrText(const RuleOutput& out) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2g", derivedErr(out));
   return buf;
@@ -151,7 +151,7 @@ restart:
             continue;
           }
           setUnhandled(st, "rule '" + rule.firedName(out.fired) +
-                               "' derives a direction known only to " + formatAngle(out) +
+                               "' derives a direction known only to " + derivedErrText(out) +
                                " rad: the features it reads are too close together to decide "
                                "the problem within the tolerance");
           return SetOutcome::kUnhandled;
