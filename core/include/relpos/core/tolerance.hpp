@@ -18,8 +18,10 @@ inline constexpr double kInputRounding = 16 * 2.220446049250313e-16;
 // and matchers widen their comparisons by it, a first-order allowance that holds while it is small
 // beside the problem's angles; the direction of a span 1e-12 long known to 4e-14 (err 0.17) would
 // take vectors 60° apart for one. Near-tangent readings (the square root of the tolerance, ~5e-5)
-// stay well below it.
-inline constexpr double kMaxDerivedErr = 1e-3;
+// stay below it, and so do chains of two (cones meeting near a tangency, then a parallelism
+// meeting that direction's cone near one: ~2e-3 for a task placed 1e6 away), which at 1e-3 were
+// decided at the origin and left unhandled there.
+inline constexpr double kMaxDerivedErr = 1e-2;
 
 struct Tolerance {
   double length = 1e-9;  // absolute length tolerance, already scaled
