@@ -19,8 +19,8 @@ inline constexpr double kInputRounding = 16 * 2.220446049250313e-16;
 // beside the problem's angles; the direction of a span 1e-12 long known to 4e-14 (err 0.17) would
 // take vectors 60° apart for one. Near-tangent readings (the square root of the tolerance, ~5e-5)
 // stay below it, and so do chains of two (cones meeting near a tangency, then a parallelism
-// meeting that direction's cone near one: ~2e-3 for a task placed 1e6 away), which at 1e-3 were
-// decided at the origin and left unhandled there.
+// meeting that direction's cone near one: ~2e-3 for a task placed 1e6 away: a cap of 1e-3 left
+// it unhandled there while solving it at the origin).
 inline constexpr double kMaxDerivedErr = 1e-2;
 
 struct Tolerance {
