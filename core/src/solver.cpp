@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -98,11 +99,13 @@ std::string describeSet(const ConstraintSet& set) {
   return s;
 }
 
-// The largest uncertainty among the constraints a rule derived.
+// The largest uncertainty among the angle constraints a rule derived (radians; a translational
+// one's is a length, which the final check bounds).
 double derivedErr(const RuleOutput& out) {
   double e = 0.0;
   for (const auto& alt : out.alternatives)
     for (const Fundamental& f : alt) {
+      if (f.translational()) continue;
       if (std::isnan(f.err)) return f.err;
       e = std::max(e, f.err);
     }

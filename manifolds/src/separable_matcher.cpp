@@ -270,15 +270,20 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
   MatchResult r = twoParallels(ctx, a, b, two);
   if (r != MatchResult::kMatched) return r;
   const Matrix3d R = two.parts[0].R0;
+  // What R leaves of the others (each within its tolerance) turns the features as an uncertainty
+  // of R would: it joins R's.
+  double mismatch = 0.0;
   for (int k = 0; k < n; ++k) {
     if (k == best_i || k == best_j) continue;
     const Tolerance tol = ctx.tol.widened(best_u + ang[k].err);
-    if (!tol.equalAngle(angleBetween(R * ang[k].u_m, ang[k].u_f), ang[k].alpha))
+    const double off = std::abs(angleBetween(R * ang[k].u_m, ang[k].u_f) - ang[k].alpha);
+    if (!(off <= tol.angle))
       return inconsistent(ctx, a.sources | b.sources | ang[k].sources,
                           "a rotation fixed by two parallelisms violates another rotational "
                           "constraint");
+    mismatch = std::max(mismatch, off);
   }
-  out.add(two.parts[0], two.err[0]);
+  out.add(two.parts[0], two.err[0] + mismatch);
   return MatchResult::kMatched;
 }
 

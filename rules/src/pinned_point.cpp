@@ -151,19 +151,19 @@ void pinnedWithPointPlane(const Fundamental& pin, const Fundamental& b, const To
 void registerPinnedPointRules(Registry& r) {
   using FK = FundamentalKind;
   addFamily(r, "pp0+pp", "PMF App. IV Table I, rows with q = 0 (generalised)", FK::kPointPoint,
-            FK::kPointPoint, &pinnedWithPointPoint,
+            FK::kPointPoint, &withLengthErr<pinnedWithPointPoint>,
             {{"pp0+pp/incompatible", "PMF App. IV Table I, row 1 with q = 0"},
              {"pp0+pp/implied", "PMF App. IV Table I, row 2 with q = 0"},
              {"pp0+pp/angle", "PMF App. IV Table I, row 5 (generalised: law of cosines)"}});
   addFamily(r, "pp0+pl", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
-            FK::kPointPoint, FK::kPointLine, &pinnedWithPointLine,
+            FK::kPointPoint, FK::kPointLine, &withLengthErr<pinnedWithPointLine>,
             {{"pp0+pl/incompatible", "PMF App. IV Table II, row 1 with p = 0"},
              {"pp0+pl/implied", "PMF App. IV Table II, row 2"},
              {"pp0+pl/cone", "PMF App. IV Table II, row 4 (d_a > q, d_b = 0, p = 0)"},
              {"pp0+pl/points", "PMF App. IV Table II, row 10 (d_b < d_a, p = q = 0)"},
              {"pp0+pl/line-through-point", "PMF App. IV Table VIII, p = 0 rows (generalised)"}});
   addFamily(r, "pp0+pplane", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
-            FK::kPointPoint, FK::kPointPlane, &pinnedWithPointPlane,
+            FK::kPointPoint, FK::kPointPlane, &withLengthErr<pinnedWithPointPlane>,
             {{"pp0+pplane/incompatible", "PMF App. IV Table V, row 1 with p = 0"},
              {"pp0+pplane/implied", "PMF App. IV Table V, row 2 with p = 0"},
              {"pp0+pplane/angle", "PMF App. IV Table V, rows 5 and 6 (generalised)"}});

@@ -34,10 +34,15 @@ void pointsOnLineAtDistance(const Fundamental& a, const Vector3d& foot, const Ve
                             RuleOutput& out) {
   if (q < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
   out.fire(kOnLineNearLine);
-  if (tol.equalLength(q, db)) return one(out, pinPoint(a, foot));
-  const double t = std::sqrt(q * q - db * db) / sin_theta;
-  one(out, pinPoint(a, foot + t * d));
-  one(out, pinPoint(a, foot - t * d));
+  // With q and db known to the tolerance δ, t moves by (q + db) δ / (sqrt(q² − db²) sin θ), or by
+  // sqrt(2 (q + db) δ) / sin θ where the line barely reaches the cylinder: the pins carry that.
+  const double spread = (q + db) * tol.length;
+  const double at_tangent = std::sqrt(2 * spread) / sin_theta;
+  if (tol.equalLength(q, db)) return one(out, withErr(pinPoint(a, foot), at_tangent));
+  const double k = std::sqrt(q * q - db * db);
+  const double t = k / sin_theta, err = std::min(spread / (k * sin_theta), at_tangent);
+  one(out, withErr(pinPoint(a, foot + t * d), err));
+  one(out, withErr(pinPoint(a, foot - t * d), err));
 }
 
 void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol, RuleOutput& out) {

@@ -2,6 +2,7 @@
 // d(P_a, K_b) = p, d(Q_a, Π_b) = 0, both points on object a. When K_b ∥ Π_b, d_b is the
 // distance between them; otherwise the line meets the plane.
 #include <cmath>
+#include <limits>
 
 #include "relpos/rules/builtin.hpp"
 #include "rule_helpers.hpp"
@@ -19,14 +20,15 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   const double da = (pp.p - pl.p).norm();
   const Vector3d& n = pp.d;
   const double dn = pl.d.dot(n);
+  const bool one_point_on_both = da <= tol.length && tol.zeroLength(p);
+  // The one point where the line crosses the plane; along the line, known to rounding / |d·n|.
+  auto pinAtCrossing = [&] {
+    if (tol.tooIllConditioned(1.0 / std::abs(dn))) return out.defer();
+    const Vector3d x = pl.q + ((pp.q - pl.q).dot(n) / dn) * pl.d;
+    return one(out.fire(kLineMeetsPlane), pinPoint(pl, x));
+  };
   if (std::abs(dn) > tol.angle) {
-    // The line crosses the plane.
-    if (da <= tol.length && tol.zeroLength(p)) {
-      // Along the line, the crossing is known to rounding / |d·n|.
-      if (tol.tooIllConditioned(1.0 / std::abs(dn))) return out.defer();
-      const Vector3d x = pl.q + ((pp.q - pl.q).dot(n) / dn) * pl.d;
-      return one(out.fire(kLineMeetsPlane), pinPoint(pl, x));
-    }
+    if (one_point_on_both) return pinAtCrossing();
     return;  // an ellipse, or a line and a plane on two points: the matcher's cases
   }
   // K_b ∥ Π_b: h = signed height of the line over the plane, read where the problem is (the
@@ -35,12 +37,16 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   const Vector3d k0 = projectOnLine(Vector3d::Zero(), pl.q, pl.d);
   const double h = (k0 - pp.q).dot(n);
   const double db = std::abs(h);
-  if (db - da > p + tol.length)
+  if (db - da > p + tol.length) {
+    // Apart here but not exactly parallel: the point is where they cross further away.
+    if (one_point_on_both && std::abs(dn) > 16 * std::numeric_limits<double>::epsilon())
+      return pinAtCrossing();
     return out.fire(kIncompatible)
         .incompatible(
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "
             "IV "
             "Table VI, row 1)");
+  }
   const Vector3d foot = k0 - h * n;  // the line's shadow on the plane passes through here
   if (da <= tol.length) {
     // One point: the cylinder about K_b cuts the plane in one or two lines ∥ K_b.

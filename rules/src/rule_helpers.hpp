@@ -77,6 +77,14 @@ inline Fundamental withErr(Fundamental f, double err) {
   return f;
 }
 
+// A rule of two translational constraints that decides its lengths within what their derivation
+// leaves uncertain (Fundamental::err, in lengths) besides the tolerance.
+template <RuleFn F>
+void withLengthErr(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                   RuleOutput& out) {
+  F(a, b, a.err + b.err > 0.0 ? tol.widenedLength(a.err + b.err) : tol, out);
+}
+
 // acos of a ratio that must lie in [-1, 1] up to tolerance; false when it does not.
 inline bool acosChecked(double num, double den, double tol, double* angle) {
   double c = num / den;

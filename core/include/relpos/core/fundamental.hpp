@@ -49,7 +49,9 @@ struct Fundamental {
   // known to (length tolerance) / d_a, and an angle read off a cosine near ±1 to its square root.
   // Rules and matchers widen their angle comparisons by it (a derived parallelism 1e-8 long is no
   // parallelism to 1e-9 rad), and where they must break one constraint to keep another, they keep
-  // the one known best. 0 for what the user gave.
+  // the one known best. 0 for what the user gave. For a translational constraint a rule derived
+  // (a point pinned where a line meets a cylinder nearly tangentially), the same in lengths: how
+  // far its point or element may be from the exact one.
   double err = 0.0;
   SourceMask sources = 0;
   std::uint16_t id = 0;      // identity within a constraint set (assigned by ConstraintSet::add)

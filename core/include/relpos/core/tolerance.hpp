@@ -51,6 +51,11 @@ struct Tolerance {
     t.angle += extra_angle;
     return t;
   }
+  Tolerance widenedLength(double extra_length) const {
+    Tolerance t = *this;
+    t.length += extra_length;
+    return t;
+  }
   bool zeroLength(double v) const { return std::abs(v) <= length; }
   bool equalLength(double a, double b) const { return std::abs(a - b) <= length; }
   bool zeroAngle(double v) const { return std::abs(v) <= angle; }
