@@ -82,7 +82,7 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
 
 void registerPointLinePlaneRules(Registry& r) {
   addFamily(r, "pl+pplane", "PMF App. IV Table VI", FundamentalKind::kPointLine,
-            FundamentalKind::kPointPlane, &pointLineAndPointPlane,
+            FundamentalKind::kPointPlane, &withLengthErr<pointLineAndPointPlane>,
             {{"pl+pplane/incompatible", "PMF App. IV Table VI, row 1"},
              {"pl+pplane/line-meets-plane", "PMF App. IV Table VI, row 6 (K ∦ Π, d_a = 0, p = 0)"},
              {"pl+pplane/implied", "PMF App. IV Table VI (K in Π, d_a = 0, p = 0)"},

@@ -58,7 +58,7 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
 
 void registerPointPlaneRules(Registry& r) {
   addFamily(r, "pplane+pplane", "PMF App. IV Table VII, Fig. 3", FundamentalKind::kPointPlane,
-            FundamentalKind::kPointPlane, &twoPointPlane,
+            FundamentalKind::kPointPlane, &withLengthErr<twoPointPlane>,
             {{"pplane+pplane/incompatible", "PMF App. IV Table VII, row 1 (Fig. 3a)"},
              {"pplane+pplane/same-plane", "PMF App. IV Table VII, row 2 (Fig. 3b)"},
              {"pplane+pplane/planes-meet", "PMF App. IV Table VII, row 3 (Fig. 3c)"},

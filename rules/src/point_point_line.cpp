@@ -42,10 +42,16 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
   if (za && zb && !tol.zeroLength(q)) {
     // The sphere's centre is on the axis: one circle (p = q) or two (p > q) ⊥ L_b.
     out.fire(kCirclesAboutAxis);
-    if (tol.equalLength(p, q)) return two(out, pl, onPlane(pl, P_b, pl.d));
+    // A centre db off the axis (within the tolerance) tilts the circles: their height ±k varies
+    // by about q db / k around the axis, and by (p + q) δ / k with p and q known to δ; where the
+    // sphere barely reaches beyond the cylinder (k small), by sqrt(2 (p + q) (δ + db)). The planes
+    // carry that (Fundamental::err).
+    const double at_tangent = std::sqrt(2 * (p + q) * (eps + db));
+    if (tol.equalLength(p, q)) return two(out, pl, withErr(onPlane(pl, P_b, pl.d), at_tangent));
     const double k = std::sqrt(p * p - q * q);
-    two(out, pl, onPlane(pl, P_b + k * pl.d, pl.d));
-    two(out, pl, onPlane(pl, P_b - k * pl.d, pl.d));
+    const double err = std::min(((p + q) * eps + q * db) / k, at_tangent);
+    two(out, pl, withErr(onPlane(pl, P_b + k * pl.d, pl.d), err));
+    two(out, pl, withErr(onPlane(pl, P_b - k * pl.d, pl.d), err));
     return;
   }
   if (za && tol.zeroLength(q)) {
