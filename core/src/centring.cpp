@@ -77,10 +77,10 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle) 
   constexpr double kRoundingUlps = 64 * std::numeric_limits<double>::epsilon();
   Tolerance t;
   t.length = std::max(relative_length * c.size, kRoundingUlps * c.magnitude);
-  // Directions read off coordinates carry their rounding over the problem's size: a task 1e6 away
-  // and 5 long knows a span's direction to ~1e-10 rad, which a rule's arithmetic may take past a
-  // 1e-9 tolerance. The same floor, as an angle.
-  t.angle = c.size > 0.0 ? std::max(angle, kRoundingUlps * c.magnitude / c.size) : angle;
+  // (Directions read off coordinates carry their rounding over the span they are read from: the
+  // rules that derive them say so in Fundamental::err, from the length tolerance above. Given
+  // directions are unit vectors a pose turns, as precise anywhere.)
+  t.angle = angle;
   // Rounding magnified a thousandfold is still ~1e-13 of the size, far below the tolerance; more
   // waits for the pairs that decide better (solver.cpp).
   t.max_amplification = kConditioningBound;

@@ -516,11 +516,15 @@ MatchResult matchSeparable(MatchContext& ctx) {
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;
   TranslationPart trans;
+  // Directions the rotation carries are known to its uncertainty (a spin axis derived where two
+  // cones barely meet): the translational elements' directions are compared within it.
+  double rot_err = 0.0;
+  for (int k = 0; k < rots.count; ++k) rot_err = std::max(rot_err, rots.err[k]);
+  const Tolerance tol = ctx.tol.widened(rot_err);
   // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
   if (hasKind(ctx.set, FundamentalKind::kLineLine) ||
-      (!matchTranslation(ctx.set, ctx.tol, rots, trans) &&
-       !matchPlanes(ctx.set, ctx.tol, rots, trans) &&
-       !matchBoundedCylinder(ctx.set, ctx.tol, rots, trans))) {
+      (!matchTranslation(ctx.set, tol, rots, trans) && !matchPlanes(ctx.set, tol, rots, trans) &&
+       !matchBoundedCylinder(ctx.set, tol, rots, trans))) {
     r = detail::reanchorForEachRotation(ctx, rots);
     return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);
   }
