@@ -101,10 +101,11 @@ void pinnedWithPointLine(const Fundamental& pin, const Fundamental& b, const Tol
     if (!tol.zeroLength(q)) return;  // Q on a circle: no single-angle rule
     // Q on the line at |u| from the pin (Table II, row "d_b < d_a, p = q = 0"): one or two pins.
     Vector3d x[2];
-    const int n = lineSphere(b.q, b.d, pin.q, nu, tol, x);
+    double err = 0.0;
+    const int n = lineSphere(b.q, b.d, pin.q, nu, tol, x, &err);
     if (n == 0) return out.fire(kIncompatible).incompatible(kOutOfReach);
     out.fire(kPoints);
-    for (int k = 0; k < n; ++k) two(out, pin, pinPoint(b, x[k]));
+    for (int k = 0; k < n; ++k) two(out, pin, withErr(pinPoint(b, x[k]), err));
     return;
   }
   // Fixed point Q_f at distance q from the mobile line (c_m, d_m): |(Rᵀw − (c_m − P_m)) × d_m| = q.

@@ -67,7 +67,8 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
       closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
       if ((f2 - f1).norm() <= tol.length) {
         if (tol.tooIllConditioned(1.0 / sin_theta)) return out.defer();
-        return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
+        return one(out.fire(kLinesMeet),
+                   withErr(pinPoint(a, 0.5 * (f1 + f2)), tol.length / sin_theta));
       }
     }
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
@@ -94,7 +95,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     if (db > tol.length)
       return out.fire(kIncompatible).incompatible("a point on two lines that do not meet");
     if (ill) return out.defer();
-    return one(out.fire(kLinesMeet), pinPoint(a, 0.5 * (f1 + f2)));
+    return one(out.fire(kLinesMeet), withErr(pinPoint(a, 0.5 * (f1 + f2)), tol.length / sin_theta));
   }
   if ((p0 || q0) && ill && db <= (p0 ? q : p) + tol.length) return out.defer();
   if (p0) return pointsOnLineAtDistance(a, f1, a.d, sin_theta, db, q, tol, out);
@@ -189,7 +190,7 @@ void twoPointLine(const Fundamental& a, const Fundamental& b, const Tolerance& t
 
 void registerPointLineRules(Registry& r) {
   addFamily(r, "pl+pl", "PMF App. IV Tables III and IV", FundamentalKind::kPointLine,
-            FundamentalKind::kPointLine, &twoPointLine,
+            FundamentalKind::kPointLine, &withLengthErr<twoPointLine>,
             {{"pl+pl/incompatible", "PMF App. IV Table III, row 1"},
              {"pl+pl/same-line", "PMF App. IV Table III, row 2"},
              {"pl+pl/parallel-cylinders", "PMF App. IV Table III, rows 4, 5 and 6 (d_a = 0)"},

@@ -25,7 +25,8 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   auto pinAtCrossing = [&] {
     if (tol.tooIllConditioned(1.0 / std::abs(dn))) return out.defer();
     const Vector3d x = pl.q + ((pp.q - pl.q).dot(n) / dn) * pl.d;
-    return one(out.fire(kLineMeetsPlane), pinPoint(pl, x));
+    // The plane's height known to the tolerance moves the crossing by that over |d·n|.
+    return one(out.fire(kLineMeetsPlane), withErr(pinPoint(pl, x), tol.length / std::abs(dn)));
   };
   if (std::abs(dn) > tol.angle) {
     if (one_point_on_both) return pinAtCrossing();

@@ -23,7 +23,8 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
     // Across the planes, their meeting line is known to rounding / sin θ.
     if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
     return one(out.fire(kPlanesMeet),
-               onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
+               withErr(onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0),
+                       tol.length / cross.norm()));
   }
   const Vector3d& n = a.d;
   // Signed distance from Σ to Π along Σ's normal, read where the problem is (Π's point nearest
@@ -36,7 +37,8 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
     if (cross.norm() > 16 * std::numeric_limits<double>::epsilon()) {
       if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
       return one(out.fire(kPlanesMeet),
-                 onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0));
+                 withErr(onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0),
+                         tol.length / cross.norm()));
     }
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");

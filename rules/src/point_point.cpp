@@ -62,7 +62,7 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
 
 void registerPointPointRules(Registry& r) {
   addFamily(r, "pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint,
-            FundamentalKind::kPointPoint, &twoPointPoint,
+            FundamentalKind::kPointPoint, &withLengthErr<twoPointPoint>,
             {{"pp+pp/incompatible", "PMF App. IV Table I, row 1"},
              {"pp+pp/same-points", "PMF App. IV Table I, row 2"},
              {"pp+pp/tangent-spheres", "PMF App. IV Table I, rows 3 and 5 (d_a = 0)"},

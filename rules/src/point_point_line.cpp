@@ -57,10 +57,11 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
   if (za && tol.zeroLength(q)) {
     // The point on the line at p from P_b: one or two points.
     Vector3d x[2];
-    const int n = lineSphere(pl.q, pl.d, P_b, p, tol, x);
+    double err = 0.0;
+    const int n = lineSphere(pl.q, pl.d, P_b, p, tol, x, &err);
     if (n == 0) return out.fire(kIncompatible).incompatible("the line does not reach the sphere");
     out.fire(kSphereMeetsLine);
-    for (int k = 0; k < n; ++k) one(out, pinPoint(pl, x[k]));
+    for (int k = 0; k < n; ++k) one(out, withErr(pinPoint(pl, x[k]), err));
     return;
   }
   if (zb) {
@@ -91,7 +92,7 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
 void registerPointPointLineRules(Registry& r) {
   addFamily(
       r, "pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
-      &pointPointAndPointLine,
+      &withLengthErr<pointPointAndPointLine>,
       {{"pp+pl/incompatible", "PMF App. IV Table II, row 1"},
        {"pp+pl/circles-about-axis", "PMF App. IV Table II, rows 3 and 4 (p >= q, d_a = d_b = 0)"},
        {"pp+pl/sphere-meets-line", "PMF App. IV Table II, row 11 (d_b < p, d_a = 0, q = 0)"},

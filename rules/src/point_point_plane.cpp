@@ -48,7 +48,7 @@ void pointPointAndPointPlane(const Fundamental& pp, const Fundamental& pl, const
 
 void registerPointPointPlaneRules(Registry& r) {
   addFamily(r, "pp+pplane", "PMF App. IV Table V", FundamentalKind::kPointPoint,
-            FundamentalKind::kPointPlane, &pointPointAndPointPlane,
+            FundamentalKind::kPointPlane, &withLengthErr<pointPointAndPointPlane>,
             {{"pp+pplane/incompatible", "PMF App. IV Table V, row 1"},
              {"pp+pplane/circle", "PMF App. IV Table V, row 4 (d_b < p, d_a = 0)"},
              {"pp+pplane/tangent", "PMF App. IV Table V, row 2 (d_b = p, d_a = 0)"},
