@@ -226,15 +226,14 @@ restart:
 // what only it can — as far as the input's rounding, so magnified, stays below the angle
 // tolerance (a gain of ~3e5 at the default 1e-9). Beyond that the pair decides nothing within the
 // tolerance (two lines crossing at 1e-9 rad meet anywhere along a stretch longer than the
-// problem) and is left to the matchers, or the problem unhandled.
+// problem; cones about axes 1e-8 apart meet in directions 1e-5 off) and is left to the matchers,
+// or the problem unhandled.
 SetOutcome combineInRounds(SolveState& st, std::size_t set_index, bool translational, int& steps) {
   st.deferred = false;
   SetOutcome o = combineList(st, set_index, translational, steps);
   if (o == SetOutcome::kCombined && st.deferred) {
     const Tolerance bounded = st.tol;
-    st.tol.max_amplification =
-        translational ? std::max(bounded.max_amplification, st.tol.angle / kInputRounding)
-                      : Tolerance().max_amplification;
+    st.tol.max_amplification = std::max(bounded.max_amplification, st.tol.angle / kInputRounding);
     st.last_round = true;
     o = combineList(st, set_index, translational, steps);
     st.last_round = false;

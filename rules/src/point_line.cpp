@@ -73,6 +73,9 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     }
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
       return out.fire(kIncompatible).incompatible(kNoPose);
+    // Where the cylinders meet is read off (p² − q²) / 2 db: nearly coaxial ones magnify the
+    // radii's rounding by p / db (axes 1e-8 apart: lines 1e-8 off for radii of 1).
+    if (tol.tooIllConditioned(std::max(p, q) / db)) return out.defer();
     const Vector3d u_b = w_perp / db;
     const Vector3d v_b = a.d.cross(u_b);
     const double k1 = (db * db + p * p - q * q) / (2 * db);
