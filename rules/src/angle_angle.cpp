@@ -61,7 +61,8 @@ enum Case { kIncompatible, kSameVector, kTwoCones, kParallelFixes, kParallelAndA
 // of the axes' angle): even given vectors, exact but for rounding, then meet where the rounding
 // puts them, 1e-9 rad off at axes 1e-7 apart. Such a pair waits (RuleOutput::defer) for the
 // pairs of its set that decide better (another parallelism makes the same vector's cone meet
-// one of them at a good angle); alone, it is computed in the unbounded round, carrying its err.
+// one of them at a good angle); alone, it is computed in the last round as far as rounding so
+// magnified stays below the angle tolerance (solver.cpp, combineInRounds), carrying its err.
 // Derived inputs (err > 0) are refused in every round: a parallelism that uncertain would let
 // later comparisons wave real differences through (the pair is left to the matchers). (The square
 // root where the cones barely meet is no gain of rounding but the geometry's own.)
