@@ -127,13 +127,16 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
       // rest along the lines: one or two directions v = (d_b u_b ± k d) / d_a.
       if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       out.fire(kParallelSpan);
+      // (The lines are parallel only within the angle tolerance: directions read off K's are off
+      // from L's by up to sin θ more.)
       if (tol.equalLength(da, db))
-        return two(out, a,
-                   withErr(angleAB(side, u_a, u_b, 0.0), spanErr(da, tol) + spanErr(db, tol)));
+        return two(
+            out, a,
+            withErr(angleAB(side, u_a, u_b, 0.0), spanErr(da, tol) + spanErr(db, tol) + sin_theta));
       const double k = std::sqrt(da * da - db * db);
       // k from d_a and d_b, each known to the tolerance (a root: steep where k is small).
       const double dk = tol.length * (da + db) / std::max(k, std::sqrt(2.0 * tol.length * da));
-      const double err = 2.0 * spanErr(da, tol) + dk / da;
+      const double err = 2.0 * spanErr(da, tol) + dk / da + sin_theta;
       two(out, a, withErr(angleAB(side, u_a, (db * u_b + k * a.d) / da, 0.0), err));
       two(out, a, withErr(angleAB(side, u_a, (db * u_b - k * a.d) / da, 0.0), err));
       return;

@@ -68,8 +68,11 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
     if (!acosChecked(-h, da, tol.length, &alpha))
       return out.fire(kIncompatible).incompatible("the plane is out of reach of the second point");
     const Vector3d u_a = (pp.p - pl.p) / da;
-    return two(out.fire(kParallelSpan), pl,
-               withErr(angleAB(pl.point_side, u_a, n, alpha), heightAngleErr(h, da, tol)));
+    // (The line is parallel to the plane only within the angle tolerance: the angle read off the
+    // plane's normal is off by up to |d·n| more.)
+    return two(
+        out.fire(kParallelSpan), pl,
+        withErr(angleAB(pl.point_side, u_a, n, alpha), heightAngleErr(h, da, tol) + std::abs(dn)));
   }
   if (db > tol.length && tol.equalLength(db - da, p)) {
     // P at p from K_b toward the plane, Q right below it on the plane.

@@ -52,8 +52,10 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
             "on (PMF App. IV Table VII, Fig. 3a)");
   // Fig. 3d: the implicit rotation ∠(u_a, n) = acos(d_b / d_a) makes Q's plane follow from P's.
   const Vector3d u_a = (b.p - a.p) / da;
+  // (The planes are parallel only within the angle tolerance: the angle read off Σ's normal is
+  // off from Π's by up to the angle between them, sin θ = |cross|.)
   two(out.fire(kParallelSpan), a,
-      withErr(angleAB(a.point_side, u_a, n, alpha), heightAngleErr(db, da, tol)));
+      withErr(angleAB(a.point_side, u_a, n, alpha), heightAngleErr(db, da, tol) + cross.norm()));
 }
 
 }  // namespace
