@@ -19,7 +19,9 @@ inline const char* const kUsage =
     "  relpos rules [--coverage DIR-or-SPEC...]\n"
     "  relpos table DIR-or-SPEC... [--repeat N] [--collision ...]\n"
     "  relpos batch DIR-or-FILE.jsonl [--jobs N] [-o OUT.jsonl] [solve options]\n"
-    "every command: [--plugin LIB.so]... [--allow-override]; RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
+    "  relpos --version\n"
+    "every command: [--plugin LIB.so]... [--allow-override] [--help];\n"
+    "  RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
 
 struct Args {
   int jobs = 0;  // batch: worker threads (0: every core)

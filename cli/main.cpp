@@ -20,6 +20,7 @@
 #include "file_text.hpp"
 #include "output_file.hpp"
 #include "relpos/collision/branch_filter.hpp"
+#include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
@@ -400,8 +401,16 @@ int main(int argc, char** argv) {
   try {
     if (argc < 2) throw UsageError("missing command");
     const std::string cmd = argv[1];
-    if (cmd == "-h" || cmd == "--help") {
-      std::cout << kUsage;
+    // Help and version before anything is parsed or loaded: `relpos solve --help` is help, not a
+    // usage error about the missing spec.
+    for (int i = 1; i < argc; ++i)
+      if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) {
+        std::cout << kUsage;
+        return kExitOk;
+      }
+    if (cmd == "--version" || cmd == "version") {
+      std::cout << "relpos " << RELPOS_VERSION << " (plugin ABI " << relpos::kPluginAbiVersion
+                << ")\n";
       return kExitOk;
     }
     Args a = parseArgs(argc, argv, 2);

@@ -101,6 +101,23 @@ TEST(Cli, UsageErrors) {
   EXPECT_EQ(run("solve").code, 2);
 }
 
+// Help from any command, and the version, are answers (exit 0 on stdout), not usage errors.
+TEST(Cli, HelpAndVersion) {
+  for (const char* args : {"--help", "-h", "solve --help", "batch -h", "table --help"}) {
+    const CmdResult r = run(args);
+    EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+    EXPECT_NE(r.out.find("relpos solve SPEC.json"), std::string::npos) << args;
+    EXPECT_EQ(r.err, "") << args;
+  }
+  const CmdResult v = run("--version");
+  EXPECT_EQ(v.code, 0) << v.err;
+  // "relpos MAJOR.MINOR.PATCH (plugin ABI N)"
+  EXPECT_EQ(v.out.rfind("relpos ", 0), 0u) << v.out;
+  EXPECT_NE(v.out.find("(plugin ABI "), std::string::npos) << v.out;
+  EXPECT_EQ(std::count(v.out.begin(), v.out.end(), '\n'), 1) << v.out;
+  EXPECT_GE(std::count(v.out.begin(), v.out.end(), '.'), 2) << v.out;
+}
+
 TEST(Cli, RulesListsTypesRulesAndManifolds) {
   CmdResult r = run("rules");
   ASSERT_EQ(r.code, 0);
