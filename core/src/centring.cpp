@@ -100,13 +100,15 @@ std::string tooFarFromOrigin(const Centring& c, const Tolerance& decided, double
   return why;
 }
 
-const char* outOfRange(const Centring& c) {
+const char* outOfRange(const Centring& c, const Problem& problem) {
   if (!std::isfinite(c.size) || !std::isfinite(c.magnitude))
     return "a coordinate or value is not finite";
   if (c.magnitude > 1e100 || c.size > 1e100)
     return "coordinates or lengths beyond 1e100 (their squares would overflow): scale the problem";
   if (c.size > 0.0 && c.size < 1e-100)
     return "the geometry spans less than 1e-100 (its squares would underflow): scale the problem";
+  if (!(problem.mobile.pose.translation().cwiseAbs().maxCoeff() <= 1e100))
+    return "the mobile object's initial pose lies beyond 1e100: scale the problem";
   return nullptr;
 }
 

@@ -41,13 +41,15 @@ Tolerance toleranceFor(const Centring& c, double relative_length, double angle);
 
 // Empty when the problem's numbers are in the range the solver computes with, else why not:
 // squares of lengths beyond 1e100 overflow, and of lengths below 1e-100 underflow.
-const char* outOfRange(const Centring& c);
+// The mobile object's initial pose counts too: only the nearest poses use it, but their distances
+// from it would overflow.
+const char* outOfRange(const Centring& c, const Problem& problem);
 
 // How many times the coordinates' rounding may widen the requested length tolerance (the floor
 // of toleranceFor) before the problem is no longer decided as asked: beyond it the answer is
 // unhandled. A task of size 3 placed 1e6 away widens it about fivefold, features 7 mm apart there
 // about 2,000-fold (directions still known to 2e-6 rad); 1e13 away, the floor would pass
-// perpendicular planes for parallel. (At the limit, the angle floor is 1e-4 rad.)
+// perpendicular planes for parallel.
 inline constexpr double kMaxRoundingWidening = 1e5;
 
 // Empty when the tolerance decided is within kMaxRoundingWidening of the one asked for, else why

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -493,11 +492,8 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
     frame = detail::centreSets(ws.pending, centre);
     frame.magnitude = std::max(frame.magnitude, detail::placementMagnitude(problem));
     st.tol = detail::toleranceFor(frame, options.length_tolerance, options.angle_tolerance);
-    if (const char* range = detail::outOfRange(frame)) {
+    if (const char* range = detail::outOfRange(frame, problem)) {
       setUnhandled(st, range);
-    } else if (!(problem.mobile.pose.translation().cwiseAbs().maxCoeff() <= 1e100)) {
-      // Only the nearest poses use it, but their distances from it would overflow.
-      setUnhandled(st, "the mobile object's initial pose lies beyond 1e100: scale the problem");
     } else {
       const std::string far = detail::tooFarFromOrigin(frame, st.tol, options.length_tolerance);
       if (!far.empty()) setUnhandled(st, far);

@@ -68,24 +68,6 @@ bool anchored(const ConstraintSet& set) {
   return true;
 }
 
-// The set for the rotation R, known to `err` rad: it rides along as two parallelisms (the
-// original rotational constraints are all summed up in R) carrying that uncertainty.
-void startDerived(const ConstraintSet& set, const Matrix3d& R, double err, ConstraintSet& derived) {
-  SourceMask rot_sources = 0;
-  for (const auto& f : set.rotational) rot_sources |= f.sources;
-  derived.clear();
-  derived.dropped_redundant = set.dropped_redundant;
-  derived.revolve = set.revolve;
-  derived.revolve_point = set.revolve_point;
-  derived.revolve_axis = set.revolve_axis;
-  derived.slack = set.slack;
-  Fundamental x = Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources);
-  Fundamental y = Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources);
-  x.err = y.err = err;
-  derived.add(x);
-  derived.add(y);
-}
-
 // The longest lever a rotation turns in the set's translational constraints: the mobile points
 // and mobile elements' points (centred: measured from the middle of the mobile features).
 double mobileLever(const ConstraintSet& set) {
@@ -93,6 +75,26 @@ double mobileLever(const ConstraintSet& set) {
   for (const auto& f : set.translational)
     lever = std::max(lever, (f.point_side == Side::kMobile ? f.p : f.q).norm());
   return lever;
+}
+
+// The set for the rotation R, known to `err` rad: it rides along as two parallelisms (the
+// original rotational constraints are all summed up in R) carrying that uncertainty, and its
+// lengths are decided within what that turns the mobile features by (err × `lever`).
+void startDerived(const ConstraintSet& set, const Matrix3d& R, double err, double lever,
+                  ConstraintSet& derived) {
+  SourceMask rot_sources = 0;
+  for (const auto& f : set.rotational) rot_sources |= f.sources;
+  derived.clear();
+  derived.dropped_redundant = set.dropped_redundant;
+  derived.revolve = set.revolve;
+  derived.revolve_point = set.revolve_point;
+  derived.revolve_axis = set.revolve_axis;
+  derived.slack = set.slack + err * lever;
+  Fundamental x = Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, rot_sources);
+  Fundamental y = Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, rot_sources);
+  x.err = y.err = err;
+  derived.add(x);
+  derived.add(y);
 }
 
 // A point of the line about which constraint f is invariant, if f pins one; false when f is not
@@ -159,9 +161,7 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
       if (combos > 64) return MatchResult::kOverflow;
     }
     for (int combo = 0; combo < combos; ++combo) {
-      startDerived(ctx.set, R, rots.err[k], derived);
-      // Turned by up to err, every mobile point moves by up to err times its lever.
-      derived.slack += rots.err[k] * lever;
+      startDerived(ctx.set, R, rots.err[k], lever, derived);
       for (std::size_t i = 0, rest = combo; i < ts.size(); ++i) {
         derived.add(shapes[i][rest % n_shapes[i]]);
         rest /= n_shapes[i];
@@ -180,9 +180,9 @@ MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives
         !revolveLine(ctx.set, rots.parts[k].u_f, ctx.tol, &c[k]))
       return MatchResult::kNoMatch;
   ConstraintSet derived;
+  const double lever = mobileLever(ctx.set);
   for (int k = 0; k < rots.count; ++k) {
-    startDerived(ctx.set, rots.parts[k].R0, rots.err[k], derived);
-    derived.slack += rots.err[k] * mobileLever(ctx.set);
+    startDerived(ctx.set, rots.parts[k].R0, rots.err[k], lever, derived);
     derived.revolve = true;
     derived.revolve_point = c[k];
     derived.revolve_axis = rots.parts[k].u_f;

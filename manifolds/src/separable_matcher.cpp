@@ -249,7 +249,6 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
 // that and their own uncertainty.
 MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
                                RotationAlternatives& out) {
-  constexpr double kRounding = 16 * std::numeric_limits<double>::epsilon();
   int best_i = -1, best_j = -1;
   double best_u = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
@@ -259,7 +258,7 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
       const double s = ang[i].u_m.cross(ang[j].u_m).norm();
       if (s <= ctx.tol.widened(ang[i].err + ang[j].err).angle || !fixesRotationWell(s)) continue;
       const double u = std::min(ang[i].err, ang[j].err) +
-                       (ang[i].err + ang[j].err + ctx.tol.angle + kRounding) / s;
+                       (ang[i].err + ang[j].err + ctx.tol.angle + kInputRounding) / s;
       if (u < best_u) best_u = u, best_i = i, best_j = j;  // (ties: the first, deterministic)
     }
   }

@@ -26,6 +26,14 @@ enum Case {
 const char* kNoPose =
     "two point-line distances that no pose satisfies (PMF App. IV Table III, row 1)";
 
+// The point where the lines (closest points f1, f2) meet at angle θ; along them, known to the
+// tolerance over sin θ, and deferred where that magnifies rounding too much.
+void pinWhereLinesMeet(const Fundamental& a, const Vector3d& f1, const Vector3d& f2,
+                       double sin_theta, const Tolerance& tol, RuleOutput& out) {
+  if (tol.tooIllConditioned(1.0 / sin_theta)) return out.defer();
+  one(out.fire(kLinesMeet), withErr(pinPoint(a, 0.5 * (f1 + f2)), tol.length / sin_theta));
+}
+
 // Points of line (c, d) at distance q from the other line, which it crosses at angle θ with the
 // common perpendicular's foot `foot` and length db: |x(t) − L| = sqrt(db² + t² sin²θ). (Derived
 // from the geometry: the table's k omits the 1/sin θ.)
@@ -37,10 +45,10 @@ void pointsOnLineAtDistance(const Fundamental& a, const Vector3d& foot, const Ve
   // With q and db known to the tolerance δ, t moves by (q + db) δ / (sqrt(q² − db²) sin θ), or by
   // sqrt(2 (q + db) δ) / sin θ where the line barely reaches the cylinder: the pins carry that.
   const double spread = (q + db) * tol.length;
-  const double at_tangent = std::sqrt(2 * spread) / sin_theta;
-  if (tol.equalLength(q, db)) return one(out, withErr(pinPoint(a, foot), at_tangent));
+  if (tol.equalLength(q, db))
+    return one(out, withErr(pinPoint(a, foot), rootErr(spread, 0.0) / sin_theta));
   const double k = std::sqrt(q * q - db * db);
-  const double t = k / sin_theta, err = std::min(spread / (k * sin_theta), at_tangent);
+  const double t = k / sin_theta, err = rootErr(spread, k) / sin_theta;
   one(out, withErr(pinPoint(a, foot + t * d), err));
   one(out, withErr(pinPoint(a, foot - t * d), err));
 }
@@ -65,11 +73,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
       // Apart here, they may still cross further away: then the point is there.
       Vector3d f1, f2;
       closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
-      if ((f2 - f1).norm() <= tol.length) {
-        if (tol.tooIllConditioned(1.0 / sin_theta)) return out.defer();
-        return one(out.fire(kLinesMeet),
-                   withErr(pinPoint(a, 0.5 * (f1 + f2)), tol.length / sin_theta));
-      }
+      if ((f2 - f1).norm() <= tol.length) return pinWhereLinesMeet(a, f1, f2, sin_theta, tol, out);
     }
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
       return out.fire(kIncompatible).incompatible(kNoPose);
@@ -97,8 +101,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
   if (p0 && q0) {
     if (db > tol.length)
       return out.fire(kIncompatible).incompatible("a point on two lines that do not meet");
-    if (ill) return out.defer();
-    return one(out.fire(kLinesMeet), withErr(pinPoint(a, 0.5 * (f1 + f2)), tol.length / sin_theta));
+    return pinWhereLinesMeet(a, f1, f2, sin_theta, tol, out);
   }
   if ((p0 || q0) && ill && db <= (p0 ? q : p) + tol.length) return out.defer();
   if (p0) return pointsOnLineAtDistance(a, f1, a.d, sin_theta, db, q, tol, out);

@@ -100,6 +100,12 @@ inline bool sameRoles(const Fundamental& a, const Fundamental& b) {
 
 // Up to two points of line (c, d) at distance r from point x: c' ± k d with c' the foot of x.
 // Returns how many (0, 1, 2); tangency within the length tolerance gives 1.
+// How far k = sqrt(K) may be off when K is known to ±2 `spread`: spread / k, or sqrt(2 spread)
+// where k is small (a tangency: K near 0; k = 0 gives that).
+inline double rootErr(double spread, double k) {
+  return std::min(spread / k, std::sqrt(2.0 * spread));
+}
+
 // `*err`: how far the points may be along the line with h and r known to the tolerance δ:
 // (r + h) δ / k, or sqrt(2 (r + h) δ) where the line barely reaches into the sphere.
 inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, double r,
@@ -107,14 +113,14 @@ inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, d
   const Vector3d foot = projectOnLine(x, c, d);
   const double h = (x - foot).norm();
   if (h > r + tol.length) return 0;
-  const double at_tangent = std::sqrt(2 * (r + h) * tol.length);
+  const double spread = (r + h) * tol.length;
   if (std::abs(h - r) <= tol.length) {
     out[0] = foot;
-    *err = at_tangent;
+    *err = rootErr(spread, 0.0);
     return 1;
   }
   const double k = std::sqrt(r * r - h * h);
-  *err = std::min((r + h) * tol.length / k, at_tangent);
+  *err = rootErr(spread, k);
   out[0] = foot + k * d;
   out[1] = foot - k * d;
   return 2;

@@ -29,7 +29,8 @@ struct Tolerance {
   // How much a rule may magnify the coordinates' rounding in what it builds (a point where lines
   // 1e-8 rad apart cross is uncertain along them by rounding / 1e-8). The solver first combines
   // with a bound, so that a well-conditioned pair decides before an ill-conditioned one whose
-  // output would be off by more than a third constraint's tolerance, then without one.
+  // output would be off by more than a third constraint's tolerance, then with the bound rounding
+  // allows (solver.cpp, combineInRounds).
   double max_amplification = 1e300;
   // Whether a rule building something `amplification` times as uncertain as its inputs should
   // wait (RuleOutput::defer) for the pairs that can decide it better.
@@ -51,6 +52,7 @@ struct Tolerance {
     t.angle += extra_angle;
     return t;
   }
+  // The same with `extra_length` (the uncertainty of derived points and lines) added.
   Tolerance widenedLength(double extra_length) const {
     Tolerance t = *this;
     t.length += extra_length;
