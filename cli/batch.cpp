@@ -162,9 +162,6 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
         out.status = "invalid";
       }
     }
-    // Names come from the input (a file name may hold any byte): the line is UTF-8 whatever they
-    // hold. Almost every line is, and checking costs a pass over it.
-    if (!isValidUtf8(state.line)) state.line = validUtf8(state.line);
     if (out.status != "invalid")
       for (const auto& b : sol.branches) out.dofs.push_back(b.manifold->dof());
     out.solve_us = sol.solve_us;

@@ -44,8 +44,8 @@ std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
 // Everything left in the stream, read in chunks (it may be a pipe, whose size is unknown).
 std::string readAll(std::istream& in);
 
-// resultToJson for any input: the result line is made valid UTF-8 before it is parsed (a default
-// name taken from a file name may hold any byte, and parsing it would throw).
+// The result line as a JSON tree, to add fields to (collision filtering): the writer writes UTF-8
+// whatever the names it copies hold, so the parse cannot fail on them.
 nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solution& sol,
                                   const relpos::ResultOptions& options);
 

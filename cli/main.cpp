@@ -116,7 +116,7 @@ nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solut
                                   const relpos::ResultOptions& options) {
   std::string line;
   relpos::writeResultLine(pb, sol, options, line);
-  return nlohmann::ordered_json::parse(isValidUtf8(line) ? line : validUtf8(line));
+  return nlohmann::ordered_json::parse(line);  // the writer writes UTF-8 whatever names hold
 }
 
 bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,

@@ -79,7 +79,7 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
 
   auto lib = std::make_shared<dll::shared_library>();
   dll::fs::error_code ec;
-  lib->load(id, dll::load_mode::rtld_now | dll::load_mode::rtld_local, ec);
+  lib->load(id, static_cast<dll::load_mode::type>(kLoadMode), ec);
   if (ec || !lib->is_loaded())
     return fail(path, "not a loadable plugin (" + whyNotLoadable(id, ec) + ")", error);
   if (!lib->has("relpos_plugin_abi") || !lib->has("relpos_register_plugin"))

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 
+#include "problem_transforms.hpp"
 #include "random_problems.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "solve_helpers.hpp"
@@ -14,12 +15,6 @@
 
 namespace relpos::test {
 namespace {
-
-Isometry3d translation(const Vector3d& t) {
-  Isometry3d X = Isometry3d::Identity();
-  X.translation() = t;
-  return X;
-}
 
 // Parameters within the bounds (unbounded lengths within ±2 of 0).
 Params drawParameters(const Manifold& m, std::mt19937_64& rng) {

@@ -3,13 +3,14 @@
 #include <cstdio>
 
 namespace relpos::test {
-namespace {
-
+// (Declared in problem_transforms.hpp.)
 Isometry3d translation(const Vector3d& t) {
   Isometry3d T = Isometry3d::Identity();
   T.translation() = t;
   return T;
 }
+
+namespace {
 
 // Applies f to every feature of the object and to the copies the constraints hold of them.
 template <typename F>

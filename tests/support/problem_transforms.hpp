@@ -11,6 +11,9 @@
 
 namespace relpos::test {
 
+// The pure translation by t.
+Isometry3d translation(const Vector3d& t);
+
 struct ProblemTransform {
   enum class Kind {
     kIdentity,

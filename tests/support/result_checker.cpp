@@ -23,12 +23,6 @@ Vector3d centroid(const ObjectSpec& o) {
   return o.features.empty() ? c : Vector3d(c / static_cast<double>(o.features.size()));
 }
 
-Isometry3d translation(const Vector3d& t) {
-  Isometry3d T = Isometry3d::Identity();
-  T.translation() = t;
-  return T;
-}
-
 bool finite(const Params& t, int dof) {
   for (int i = 0; i < dof; ++i)
     if (!std::isfinite(t[i])) return false;
