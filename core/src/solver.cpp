@@ -138,7 +138,7 @@ restart:
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();
         if (!guarded(
-                st, [&] { rule.fn(a, b, st.tol, out); },
+                st, [&] { rule.fn(a, b, st.tol, out, rule.context); },
                 [&] { return "rule '" + rule.name + "'" + originNote(rule.origin); }))
           return SetOutcome::kUnhandled;
         if (out.verdict == RuleVerdict::kNoChange) {

@@ -79,9 +79,12 @@ inline Fundamental withErr(Fundamental f, double err) {
 
 // A rule of two translational constraints that decides its lengths within what their derivation
 // leaves uncertain (Fundamental::err, in lengths) besides the tolerance.
-template <RuleFn F>
+// (F: the rule without the context, which no built-in rule reads.)
+using RuleBody = void (*)(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                          RuleOutput& out);
+template <RuleBody F>
 void withLengthErr(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                   RuleOutput& out) {
+                   RuleOutput& out, const void* /*context*/) {
   F(a, b, a.err + b.err > 0.0 ? tol.widenedLength(a.err + b.err) : tol, out);
 }
 
@@ -124,21 +127,6 @@ inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, d
   out[0] = foot + k * d;
   out[1] = foot - k * d;
   return 2;
-}
-
-// Registers a rule family with its cases.
-inline void addFamily(Registry& r, const char* name, const char* citation, FundamentalKind first,
-                      FundamentalKind second, RuleFn fn, std::vector<RuleCase> cases,
-                      bool handles_ranges = false) {
-  RuleInfo info;
-  info.handles_ranges = handles_ranges;
-  info.name = name;
-  info.citation = citation;
-  info.first = first;
-  info.second = second;
-  info.fn = fn;
-  info.cases = std::move(cases);
-  r.addRule(std::move(info));
 }
 
 }  // namespace relpos::rules::detail

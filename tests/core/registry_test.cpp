@@ -8,7 +8,7 @@
 namespace relpos::test {
 namespace {
 
-void noRule(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&) {}
+void noRule(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&, const void*) {}
 
 TEST(Registry, DuplicateNamesAreRejectedUnlessReplacing) {
   Registry r;

@@ -81,7 +81,7 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
           const Fundamental& a = e.swapped ? fs[j] : fs[i];
           const Fundamental& b = e.swapped ? fs[i] : fs[j];
           RuleOutput out;
-          rule.fn(a, b, tol, out);
+          rule.fn(a, b, tol, out, rule.context);
           const std::string name = rule.firedName(out.fired);
           SCOPED_TRACE(name + " trial " + std::to_string(trial) + " known pose " +
                        poseText(kp.X_WM_star));
@@ -157,7 +157,7 @@ TEST(RuleProperties, OutputsImplyInputsOnBundledProblems) {
             const Fundamental& a = entry.swapped ? fs[j] : fs[i];
             const Fundamental& b = entry.swapped ? fs[i] : fs[j];
             RuleOutput out;
-            rule.fn(a, b, tol, out);
+            rule.fn(a, b, tol, out, rule.context);
             const std::string name = rule.firedName(out.fired);
             SCOPED_TRACE(name + " in " + e.path().string());
             std::string bad;

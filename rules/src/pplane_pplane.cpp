@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -58,15 +58,16 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
       withErr(angleAB(a.point_side, u_a, n, alpha), heightAngleErr(db, da, tol) + cross.norm()));
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table VII, row 1 (Fig. 3a)"},
+    {kSamePlane, "same-plane", "PMF App. IV Table VII, row 2 (Fig. 3b)"},
+    {kPlanesMeet, "planes-meet", "PMF App. IV Table VII, row 3 (Fig. 3c)"},
+    {kParallelSpan, "parallel-span", "PMF App. IV Table VII, rows 4 and 5 (Fig. 3d)"}};
+
 }  // namespace
 
-void registerPointPlaneRules(Registry& r) {
-  addFamily(r, "pplane+pplane", "PMF App. IV Table VII, Fig. 3", FundamentalKind::kPointPlane,
-            FundamentalKind::kPointPlane, &withLengthErr<twoPointPlane>,
-            {{"pplane+pplane/incompatible", "PMF App. IV Table VII, row 1 (Fig. 3a)"},
-             {"pplane+pplane/same-plane", "PMF App. IV Table VII, row 2 (Fig. 3b)"},
-             {"pplane+pplane/planes-meet", "PMF App. IV Table VII, row 3 (Fig. 3c)"},
-             {"pplane+pplane/parallel-span", "PMF App. IV Table VII, rows 4 and 5 (Fig. 3d)"}});
-}
+constexpr RuleFamily families::pplane_pplane =
+    family("pplane+pplane", "PMF App. IV Table VII, Fig. 3", FundamentalKind::kPointPlane,
+           FundamentalKind::kPointPlane, &withLengthErr<twoPointPlane>, kCases);
 
 }  // namespace relpos::rules

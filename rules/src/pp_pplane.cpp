@@ -4,7 +4,7 @@
 // Rows with p = 0 are the pinned-point rules (pinned_point.cpp).
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -44,15 +44,16 @@ void pointPointAndPointPlane(const Fundamental& pp, const Fundamental& pl, const
   }
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table V, row 1"},
+    {kCircle, "circle", "PMF App. IV Table V, row 4 (d_b < p, d_a = 0)"},
+    {kTangent, "tangent", "PMF App. IV Table V, row 2 (d_b = p, d_a = 0)"},
+    {kStretched, "stretched", "PMF App. IV Table V, row 3 (d_b − d_a = p)"}};
+
 }  // namespace
 
-void registerPointPointPlaneRules(Registry& r) {
-  addFamily(r, "pp+pplane", "PMF App. IV Table V", FundamentalKind::kPointPoint,
-            FundamentalKind::kPointPlane, &withLengthErr<pointPointAndPointPlane>,
-            {{"pp+pplane/incompatible", "PMF App. IV Table V, row 1"},
-             {"pp+pplane/circle", "PMF App. IV Table V, row 4 (d_b < p, d_a = 0)"},
-             {"pp+pplane/tangent", "PMF App. IV Table V, row 2 (d_b = p, d_a = 0)"},
-             {"pp+pplane/stretched", "PMF App. IV Table V, row 3 (d_b − d_a = p)"}});
-}
+constexpr RuleFamily families::pp_pplane =
+    family("pp+pplane", "PMF App. IV Table V", FundamentalKind::kPointPoint,
+           FundamentalKind::kPointPlane, &withLengthErr<pointPointAndPointPlane>, kCases);
 
 }  // namespace relpos::rules

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -82,17 +82,18 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   }
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table VI, row 1"},
+    {kLineMeetsPlane, "line-meets-plane", "PMF App. IV Table VI, row 6 (K ∦ Π, d_a = 0, p = 0)"},
+    {kImplied, "implied", "PMF App. IV Table VI (K in Π, d_a = 0, p = 0)"},
+    {kLinesOnPlane, "lines-on-plane", "PMF App. IV Table VI, rows 3 and 4 (K ∥ Π, d_a = 0)"},
+    {kParallelSpan, "parallel-span", "PMF App. IV Table VI, rows 7 and 8 (K ∥ Π, p = 0)"},
+    {kStretched, "stretched", "PMF App. IV Table VI, row 2 (d_b − d_a = p)"}};
+
 }  // namespace
 
-void registerPointLinePlaneRules(Registry& r) {
-  addFamily(r, "pl+pplane", "PMF App. IV Table VI", FundamentalKind::kPointLine,
-            FundamentalKind::kPointPlane, &withLengthErr<pointLineAndPointPlane>,
-            {{"pl+pplane/incompatible", "PMF App. IV Table VI, row 1"},
-             {"pl+pplane/line-meets-plane", "PMF App. IV Table VI, row 6 (K ∦ Π, d_a = 0, p = 0)"},
-             {"pl+pplane/implied", "PMF App. IV Table VI (K in Π, d_a = 0, p = 0)"},
-             {"pl+pplane/lines-on-plane", "PMF App. IV Table VI, rows 3 and 4 (K ∥ Π, d_a = 0)"},
-             {"pl+pplane/parallel-span", "PMF App. IV Table VI, rows 7 and 8 (K ∥ Π, p = 0)"},
-             {"pl+pplane/stretched", "PMF App. IV Table VI, row 2 (d_b − d_a = p)"}});
-}
+constexpr RuleFamily families::pl_pplane =
+    family("pl+pplane", "PMF App. IV Table VI", FundamentalKind::kPointLine,
+           FundamentalKind::kPointPlane, &withLengthErr<pointLineAndPointPlane>, kCases);
 
 }  // namespace relpos::rules

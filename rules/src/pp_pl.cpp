@@ -5,7 +5,7 @@
 // rules (pinned_point.cpp).
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -87,18 +87,20 @@ void pointPointAndPointLine(const Fundamental& pp, const Fundamental& pl, const 
                pinPoint(pl, Q_b - q * u_b));
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table II, row 1"},
+    {kCirclesAboutAxis, "circles-about-axis",
+     "PMF App. IV Table II, rows 3 and 4 (p >= q, d_a = d_b = 0)"},
+    {kSphereMeetsLine, "sphere-meets-line",
+     "PMF App. IV Table II, row 11 (d_b < p, d_a = 0, q = 0)"},
+    {kTangent, "tangent", "PMF App. IV Table II, rows 8 and 9 (d_a = 0)"},
+    {kCollinear, "collinear", "PMF App. IV Table II, rows 7 and 10 (d_a, d_b ≠ 0)"},
+    {kExtremeOnAxis, "extreme-on-axis", "PMF App. IV Table II, row 6 (d_a = q − p, d_b = 0)"}};
+
 }  // namespace
 
-void registerPointPointLineRules(Registry& r) {
-  addFamily(
-      r, "pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
-      &withLengthErr<pointPointAndPointLine>,
-      {{"pp+pl/incompatible", "PMF App. IV Table II, row 1"},
-       {"pp+pl/circles-about-axis", "PMF App. IV Table II, rows 3 and 4 (p >= q, d_a = d_b = 0)"},
-       {"pp+pl/sphere-meets-line", "PMF App. IV Table II, row 11 (d_b < p, d_a = 0, q = 0)"},
-       {"pp+pl/tangent", "PMF App. IV Table II, rows 8 and 9 (d_a = 0)"},
-       {"pp+pl/collinear", "PMF App. IV Table II, rows 7 and 10 (d_a, d_b ≠ 0)"},
-       {"pp+pl/extreme-on-axis", "PMF App. IV Table II, row 6 (d_a = q − p, d_b = 0)"}});
-}
+constexpr RuleFamily families::pp_pl =
+    family("pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint,
+           FundamentalKind::kPointLine, &withLengthErr<pointPointAndPointLine>, kCases);
 
 }  // namespace relpos::rules

@@ -3,7 +3,7 @@
 // lines P_b, Q_b are the feet of their common perpendicular.
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -195,21 +195,22 @@ void twoPointLine(const Fundamental& a, const Fundamental& b, const Tolerance& t
   differentPoints(a, b, da, tol, out);
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table III, row 1"},
+    {kSameLine, "same-line", "PMF App. IV Table III, row 2"},
+    {kParallelCylinders, "parallel-cylinders", "PMF App. IV Table III, rows 4, 5 and 6 (d_a = 0)"},
+    {kLinesMeet, "lines-meet", "PMF App. IV Table III, last row (003 §VI-A)"},
+    {kOnLineNearLine, "on-line-near-line", "PMF App. IV Table III, row 9 (p = 0, K ∦ L)"},
+    {kSkewTangent, "skew-tangent", "PMF App. IV Table III, row 7 (d_a = 0)"},
+    {kParallelSpan, "parallel-span", "PMF App. IV Table IV, rows 2 and 3"},
+    {kCrossingSpan, "crossing-span", "PMF App. IV Table IV, row 4 (generalised to skew lines)"},
+    {kNearOwnLine, "near-own-line", "PMF App. IV Table IV, row 1"},
+    {kCollinear, "collinear", "PMF App. IV Table III, rows 3, 4 and 8 (d_a ≠ 0)"}};
+
 }  // namespace
 
-void registerPointLineRules(Registry& r) {
-  addFamily(r, "pl+pl", "PMF App. IV Tables III and IV", FundamentalKind::kPointLine,
-            FundamentalKind::kPointLine, &withLengthErr<twoPointLine>,
-            {{"pl+pl/incompatible", "PMF App. IV Table III, row 1"},
-             {"pl+pl/same-line", "PMF App. IV Table III, row 2"},
-             {"pl+pl/parallel-cylinders", "PMF App. IV Table III, rows 4, 5 and 6 (d_a = 0)"},
-             {"pl+pl/lines-meet", "PMF App. IV Table III, last row (003 §VI-A)"},
-             {"pl+pl/on-line-near-line", "PMF App. IV Table III, row 9 (p = 0, K ∦ L)"},
-             {"pl+pl/skew-tangent", "PMF App. IV Table III, row 7 (d_a = 0)"},
-             {"pl+pl/parallel-span", "PMF App. IV Table IV, rows 2 and 3"},
-             {"pl+pl/crossing-span", "PMF App. IV Table IV, row 4 (generalised to skew lines)"},
-             {"pl+pl/near-own-line", "PMF App. IV Table IV, row 1"},
-             {"pl+pl/collinear", "PMF App. IV Table III, rows 3, 4 and 8 (d_a ≠ 0)"}});
-}
+constexpr RuleFamily families::pl_pl =
+    family("pl+pl", "PMF App. IV Tables III and IV", FundamentalKind::kPointLine,
+           FundamentalKind::kPointLine, &withLengthErr<twoPointLine>, kCases);
 
 }  // namespace relpos::rules

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -29,7 +29,7 @@ Fundamental strip(const Fundamental& a, const Vector3d& f, const Vector3d& m, do
 }
 
 void cylinderCutByParallelPlane(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                                RuleOutput& out) {
+                                RuleOutput& out, const void* /*context*/) {
   // a: point-line range; b: exact point-plane on the same point, its plane parallel to the line.
   if (a.exact() || !b.exact() || !sameRoles(a, b) || (a.p - b.p).norm() > tol.length) return;
   if (std::abs(a.d.dot(b.d)) > tol.angle) return;
@@ -54,18 +54,19 @@ void cylinderCutByParallelPlane(const Fundamental& a, const Fundamental& b, cons
   two(out, b, strip(a, foot, m, -outer, -inner, tol));
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kDisjoint, "disjoint",
+     "Somani 004 Table VII: a plane parallel to a thick cylinder's axis misses it"},
+    {kOneStrip, "one-strip",
+     "Somani 004 Table VII: a parallel plane cuts a thick cylinder in one strip"},
+    {kTwoStrips, "two-strips",
+     "Somani 004 Table VII: a parallel plane cuts a thick cylinder in two strips"}};
+
 }  // namespace
 
-void registerRangeCutRules(Registry& r) {
-  addFamily(r, "range:pline+pplane", "Somani 004 Table VII (PMF-style limit cases)",
-            FundamentalKind::kPointLine, FundamentalKind::kPointPlane, &cylinderCutByParallelPlane,
-            {{"range:pline+pplane/disjoint",
-              "Somani 004 Table VII: a plane parallel to a thick cylinder's axis misses it"},
-             {"range:pline+pplane/one-strip",
-              "Somani 004 Table VII: a parallel plane cuts a thick cylinder in one strip"},
-             {"range:pline+pplane/two-strips",
-              "Somani 004 Table VII: a parallel plane cuts a thick cylinder in two strips"}},
-            true);
-}
+constexpr RuleFamily families::range_pline_pplane =
+    family("range:pline+pplane", "Somani 004 Table VII (PMF-style limit cases)",
+           FundamentalKind::kPointLine, FundamentalKind::kPointPlane, &cylinderCutByParallelPlane,
+           kCases, /*handles_ranges=*/true);
 
 }  // namespace relpos::rules

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -58,17 +58,18 @@ void twoPointPoint(const Fundamental& a, const Fundamental& b, const Tolerance& 
     return two(out.fire(kCollinear), pinPoint(a, a.q + p * u_b), pinPoint(b, b.q - q * u_b));
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table I, row 1"},
+    {kSamePoints, "same-points", "PMF App. IV Table I, row 2"},
+    {kTangentSpheres, "tangent-spheres", "PMF App. IV Table I, rows 3 and 5 (d_a = 0)"},
+    {kCircle, "circle", "PMF App. IV Table I, row 4"},
+    {kCollinear, "collinear", "PMF App. IV Table I, rows 3 and 6 (d_a ≠ 0)"},
+    {kEqualSpan, "equal-span", "PMF App. IV Table I, row 7"}};
+
 }  // namespace
 
-void registerPointPointRules(Registry& r) {
-  addFamily(r, "pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint,
-            FundamentalKind::kPointPoint, &withLengthErr<twoPointPoint>,
-            {{"pp+pp/incompatible", "PMF App. IV Table I, row 1"},
-             {"pp+pp/same-points", "PMF App. IV Table I, row 2"},
-             {"pp+pp/tangent-spheres", "PMF App. IV Table I, rows 3 and 5 (d_a = 0)"},
-             {"pp+pp/circle", "PMF App. IV Table I, row 4"},
-             {"pp+pp/collinear", "PMF App. IV Table I, rows 3 and 6 (d_a ≠ 0)"},
-             {"pp+pp/equal-span", "PMF App. IV Table I, row 7"}});
-}
+constexpr RuleFamily families::pp_pp =
+    family("pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint,
+           FundamentalKind::kPointPoint, &withLengthErr<twoPointPoint>, kCases);
 
 }  // namespace relpos::rules
