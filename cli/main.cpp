@@ -19,13 +19,13 @@
 #include "cli.hpp"
 #include "file_text.hpp"
 #include "output_file.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "safe_text.hpp"
 
 namespace fs = std::filesystem;

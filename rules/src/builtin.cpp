@@ -1,7 +1,6 @@
 #include "relpos/rules/builtin.hpp"
 
 #include "family.hpp"
-#include "relpos/manifolds/builtin.hpp"
 
 namespace relpos::rules {
 
@@ -57,22 +56,3 @@ std::string fileSpelling(const std::string& rule_name) {
 }
 
 }  // namespace relpos::rules
-
-namespace relpos {
-void registerBuiltins(Registry& r) {
-  rules::registerBuiltinConstraintTypes(r);
-  rules::registerBuiltinRules(r);
-  manifolds::registerBuiltinManifolds(r);
-  manifolds::registerMixedManifolds(r);
-}
-
-const Registry& builtinRegistry() {
-  static const Registry registry = [] {
-    Registry r;
-    registerBuiltins(r);
-    r.freeze();
-    return r;
-  }();
-  return registry;
-}
-}  // namespace relpos

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "relpos/rules/builtin.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {

@@ -12,9 +12,9 @@
 #include <sstream>
 
 #include "known_failures.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::fuzz {
 namespace {

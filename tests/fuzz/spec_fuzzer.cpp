@@ -11,9 +11,9 @@
 #include <string>
 
 #include "known_failures.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "result_checks.hpp"
 
 namespace {

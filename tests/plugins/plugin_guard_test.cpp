@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "bad/manifold_throws.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/core/spec_io.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {

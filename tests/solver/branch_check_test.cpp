@@ -9,8 +9,8 @@
 
 #include "evaluator.hpp"
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/manifolds/separable.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {

@@ -19,10 +19,3 @@ std::vector<std::string> builtinFamilyIds();
 // "range_pp_pp").
 std::string fileSpelling(const std::string& rule_name);
 }  // namespace relpos::rules
-
-namespace relpos {
-// Registers every built-in constraint type, rule and manifold, then returns. Does not freeze.
-void registerBuiltins(Registry& registry);
-// One frozen registry holding the built-ins, made on first use (tests, benchmarks, tools).
-const Registry& builtinRegistry();
-}  // namespace relpos
