@@ -11,7 +11,8 @@
 
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 
 namespace {
 

@@ -24,7 +24,8 @@
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "safe_text.hpp"
 

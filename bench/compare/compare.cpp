@@ -14,7 +14,7 @@
 #include "peers.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 
 namespace {
 using namespace relpos;

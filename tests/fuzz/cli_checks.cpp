@@ -14,7 +14,8 @@
 #include "known_failures.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 
 namespace relpos::fuzz {
 namespace {

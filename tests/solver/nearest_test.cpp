@@ -13,7 +13,7 @@
 
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
