@@ -2,7 +2,6 @@
 // d(P_a, K_b) = p, d(Q_a, Π_b) = 0, both points on object a. When K_b ∥ Π_b, d_b is the
 // distance between them; otherwise the line meets the plane.
 #include <cmath>
-#include <limits>
 
 #include "family.hpp"
 #include "rule_helpers.hpp"
@@ -40,8 +39,7 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   const double db = std::abs(h);
   if (db - da > p + tol.length) {
     // Apart here but not exactly parallel: the point is where they cross further away.
-    if (one_point_on_both && std::abs(dn) > 16 * std::numeric_limits<double>::epsilon())
-      return pinAtCrossing();
+    if (one_point_on_both && Tolerance::beyondRounding(dn)) return pinAtCrossing();
     return out.fire(kIncompatible)
         .incompatible(
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "

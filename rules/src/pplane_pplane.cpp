@@ -1,7 +1,6 @@
 // PMF App. IV Table VII and Fig. 3: two point-plane coincidences d(P_a, Σ_b) = 0,
 // d(Q_a, Π_b) = 0 (both points on one object, both planes on the other).
 #include <cmath>
-#include <limits>
 
 #include "family.hpp"
 #include "rule_helpers.hpp"
@@ -12,6 +11,16 @@ using namespace detail;
 
 enum Case { kIncompatible, kSamePlane, kPlanesMeet, kParallelSpan };
 
+// Fig. 3c: the one point of a and b on the line where their planes meet (cross = n_a × n_b).
+// Across the planes, that line is known to rounding / sin θ: deferred where that is too much.
+void onLineWherePlanesMeet(const Fundamental& a, const Fundamental& b, const Vector3d& cross,
+                           const Tolerance& tol, RuleOutput& out) {
+  if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
+  one(out.fire(kPlanesMeet),
+      withErr(onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0),
+              tol.length / cross.norm()));
+}
+
 void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                    RuleOutput& out) {
   if (!sameRoles(a, b)) return;  // mixed roles: not a PMF table
@@ -20,11 +29,7 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (!tol.parallelUnit(cross.norm())) {
     // Fig. 3c: the same point on two planes lies on their intersection line.
     if (da > tol.length) return;  // different points: the matcher's plane∩plane line
-    // Across the planes, their meeting line is known to rounding / sin θ.
-    if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
-    return one(out.fire(kPlanesMeet),
-               withErr(onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0),
-                       tol.length / cross.norm()));
+    return onLineWherePlanesMeet(a, b, cross, tol, out);
   }
   const Vector3d& n = a.d;
   // Signed distance from Σ to Π along Σ's normal, read where the problem is (Π's point nearest
@@ -34,12 +39,8 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (da <= tol.length) {
     if (std::abs(db) <= tol.length) return out.fire(kSamePlane).redundantSecond();  // Fig. 3b
     // Apart here but not exactly parallel: they meet further away (unless only by rounding).
-    if (cross.norm() > 16 * std::numeric_limits<double>::epsilon()) {
-      if (tol.tooIllConditioned(1.0 / cross.norm())) return out.defer();
-      return one(out.fire(kPlanesMeet),
-                 withErr(onLine(a, pointWherePlanesMeet(a.q, a.d, b.q, b.d), cross.normalized(), 0),
-                         tol.length / cross.norm()));
-    }
+    if (Tolerance::beyondRounding(cross.norm()))
+      return onLineWherePlanesMeet(a, b, cross, tol, out);
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }

@@ -12,7 +12,7 @@ using namespace detail;
 
 void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                       RuleOutput& out, const void* /*context*/) {
-  if (bothExact(a, b) || !sameRoles(a, b) || (a.p - b.p).norm() > tol.length) return;
+  if (bothExact(a, b) || !onePoint(a, b, tol)) return;
   const Vector3d w = b.q - a.q;
   if (!tol.parallelUnit(a.d.cross(b.d).norm()) || (w - w.dot(a.d) * a.d).norm() > tol.length)
     return;

@@ -31,7 +31,7 @@ Fundamental strip(const Fundamental& a, const Vector3d& f, const Vector3d& m, do
 void cylinderCutByParallelPlane(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                                 RuleOutput& out, const void* /*context*/) {
   // a: point-line range; b: exact point-plane on the same point, its plane parallel to the line.
-  if (a.exact() || !b.exact() || !sameRoles(a, b) || (a.p - b.p).norm() > tol.length) return;
+  if (a.exact() || !b.exact() || !onePoint(a, b, tol)) return;
   if (std::abs(a.d.dot(b.d)) > tol.angle) return;
   const double signed_h = (b.q - a.q).dot(b.d);
   const double h = std::abs(signed_h);

@@ -22,7 +22,7 @@ Fundamental planeRange(const Fundamental& a, Interval v, const Tolerance& tol) {
 
 void parallelSlabs(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
                    RuleOutput& out, const void* /*context*/) {
-  if (bothExact(a, b) || !sameRoles(a, b) || (a.p - b.p).norm() > tol.length) return;
+  if (bothExact(a, b) || !onePoint(a, b, tol)) return;
   if (!tol.parallelUnit(a.d.cross(b.d).norm())) return;  // crossing slabs: a parallelepiped
   // In a's reading t = (P − q_a)·n_a: b's values map by its orientation and plane offset.
   const double s = a.d.dot(b.d) > 0 ? 1.0 : -1.0;

@@ -100,6 +100,11 @@ inline bool acosChecked(double num, double den, double tol, double* angle) {
 inline bool sameRoles(const Fundamental& a, const Fundamental& b) {
   return a.point_side == b.point_side;
 }
+// Whether the two constraints constrain the same point of the same object (within the length
+// tolerance), the guard of every rule on one point's two loci.
+inline bool onePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol) {
+  return sameRoles(a, b) && !((a.p - b.p).norm() > tol.length);
+}
 
 // Up to two points of line (c, d) at distance r from point x: c' ± k d with c' the foot of x.
 // Returns how many (0, 1, 2); tangency within the length tolerance gives 1.

@@ -2,6 +2,7 @@
 // One tolerance for every rule condition ("parallel", "d_a = 0", "p = q"): never a bare epsilon in
 // a rule. Lengths scale with the problem's size so that millimetre and metre specs behave alike.
 #include <cmath>
+#include <limits>
 
 namespace relpos {
 
@@ -13,6 +14,12 @@ inline constexpr double kConditioningBound = 1e3;
 // coordinate, a few more from placing features by a pose and normalising): what an
 // ill-conditioned construction magnifies even when no rule derived its inputs (err = 0).
 inline constexpr double kInputRounding = 16 * 2.220446049250313e-16;
+static_assert(kInputRounding == 16 * std::numeric_limits<double>::epsilon());
+
+// How far outside its range ([0, π], or [−π/2, π/2] for a line and a plane) a given angle may be
+// and still be read as in it: the rounding of a value converted from degrees (180° is an ulp or
+// so beyond π) with room to spare. A check of the input, not a tolerance of the solve.
+inline constexpr double kAngleRangeSlack = 1e-12;
 
 // The largest uncertainty (Fundamental::err, radians) a derived angle constraint may carry. Rules
 // and matchers widen their comparisons by it, a first-order allowance that holds while it is small
@@ -64,6 +71,10 @@ struct Tolerance {
   bool equalAngle(double a, double b) const { return std::abs(a - b) <= angle; }
   // |sin| of the angle between two unit vectors is below the angle tolerance.
   bool parallelUnit(double cross_norm) const { return cross_norm <= angle; }
+  // Whether a sine (|a × b|, |d·n|) is more than the inputs' rounding (kInputRounding): below it
+  // two directions are parallel for every purpose, whatever the tolerance (a crossing so far away
+  // is only rounding's).
+  static bool beyondRounding(double sine) { return std::abs(sine) > kInputRounding; }
 };
 
 }  // namespace relpos
