@@ -55,6 +55,13 @@ bool satisfiesAnAlternative(const RuleOutput& out, const Isometry3d& X_WM) {
   return false;
 }
 
+void makeRange(Problem& p, std::size_t i, double lo, double hi) {
+  InputConstraint& c = p.constraints.at(i);
+  c.has_value = false;
+  c.min = lo;
+  c.max = hi;
+}
+
 Isometry3d poseOf(const Vector3d& t, double angle, const Vector3d& axis) {
   Isometry3d X = Isometry3d::Identity();
   X.linear() = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();

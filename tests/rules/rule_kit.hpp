@@ -26,6 +26,9 @@ bool satisfiesInputs(const Problem& p, const Isometry3d& X_WM);
 // Whether X_WM satisfies every fundamental of one of the rule's alternatives (within 1e-9).
 bool satisfiesAnAlternative(const RuleOutput& out, const Isometry3d& X_WM);
 
+// Makes constraint i of p a range [lo, hi] instead of a value (as "min" and "max" in a spec).
+void makeRange(Problem& p, std::size_t i, double lo, double hi);
+
 // X_WM = a rotation of `angle` about `axis` then a translation by t.
 Isometry3d poseOf(const Vector3d& t, double angle = 0.0, const Vector3d& axis = Vector3d::UnitZ());
 
