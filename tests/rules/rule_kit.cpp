@@ -35,6 +35,7 @@ RuleOutput applyRule(const std::string& family, const Problem& p, std::string* c
     const Fundamental& a = in_order ? fs[0] : fs[1];
     const Fundamental& b = in_order ? fs[1] : fs[0];
     rule.fn(a, b, tol, out, rule.context);
+    EXPECT_LT(out.fired, static_cast<int>(rule.cases.size())) << family << ": a case without a row";
     if (out.fired >= 0) *case_name = rule.firedName(out.fired);
     return out;
   }
