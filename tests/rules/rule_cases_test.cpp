@@ -1,8 +1,9 @@
 // One problem per rule case: data/rules/FAMILY--CASE.json, its answer derived by hand from the
 // geometry beside it in FAMILY--CASE.expected. Each is its own test, named after the spec
-// (--gtest_filter='DataRules/RuleCase.*/pp_pplane__circle' runs data/rules/pp_pplane--circle.json
-// alone): the case fires, and the answer has the expected status, branches, DOF, conflicts and
-// redundant constraints, with every sampled pose satisfying every input.
+// (--gtest_filter='DataRules/RuleCaseSpec.*/pp_pplane__circle' runs
+// data/rules/pp_pplane--circle.json alone): the case fires, and the answer has the expected status,
+// branches, DOF, conflicts and redundant constraints, with every sampled pose satisfying every
+// input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -39,9 +40,9 @@ std::string testName(const testing::TestParamInfo<std::string>& info) {
   return name;
 }
 
-class RuleCase : public testing::TestWithParam<std::string> {};
+class RuleCaseSpec : public testing::TestWithParam<std::string> {};
 
-TEST_P(RuleCase, FiresWithTheExpectedAnswer) {
+TEST_P(RuleCaseSpec, FiresWithTheExpectedAnswer) {
   const std::string stem = GetParam();
   // The spec is named as the case it covers is spelled for files (fileSpelling).
   std::ifstream in(kDir + stem + ".expected");
@@ -52,7 +53,7 @@ TEST_P(RuleCase, FiresWithTheExpectedAnswer) {
   checkSpecAgainstExpectation(kDir + stem + ".json", kDir + stem + ".expected", builtinRegistry());
 }
 
-INSTANTIATE_TEST_SUITE_P(DataRules, RuleCase, testing::ValuesIn(stems(".json")), testName);
+INSTANTIATE_TEST_SUITE_P(DataRules, RuleCaseSpec, testing::ValuesIn(stems(".json")), testName);
 
 TEST(RuleCases, EveryExpectationHasItsSpec) {
   const std::vector<std::string> specs = stems(".json");
