@@ -55,6 +55,15 @@ TEST_P(RuleCaseSpec, FiresWithTheExpectedAnswer) {
 
 INSTANTIATE_TEST_SUITE_P(DataRules, RuleCaseSpec, testing::ValuesIn(stems(".json")), testName);
 
+// One spec per case: a case without data/rules/FAMILY--CASE.json fails here.
+TEST(RuleCases, EveryRegisteredCaseHasItsDataSpec) {
+  const std::vector<std::string> specs = stems(".json");
+  for (const RuleInfo& rule : builtinRegistry().rules())
+    for (const RuleCase& c : rule.cases)
+      EXPECT_TRUE(std::binary_search(specs.begin(), specs.end(), rules::fileSpelling(c.name)))
+          << "no data/rules/" << rules::fileSpelling(c.name) << ".json for " << c.name;
+}
+
 TEST(RuleCases, EveryExpectationHasItsSpec) {
   const std::vector<std::string> specs = stems(".json");
   for (const std::string& stem : stems(".expected"))
