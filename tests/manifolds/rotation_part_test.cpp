@@ -11,12 +11,13 @@ namespace relpos::test {
 namespace {
 
 using manifolds::RotationPart;
+namespace rotation = manifolds::rotation;
 
 TEST(RotationPart, OneParallelKeepsTheVectorParallel) {
   Rng rng(1);
   for (int i = 0; i < 100; ++i) {
     Vector3d um = rng.unit(), uf = rng.unit();
-    RotationPart r = RotationPart::oneParallel(um, uf);
+    RotationPart r = rotation::OneParallel(um, uf);
     double t[1] = {rng.uniform(-3, 3)};
     EXPECT_TRUE((r.rotation(t) * um).isApprox(uf, 1e-12));
   }
@@ -27,7 +28,7 @@ TEST(RotationPart, OneAngleKeepsTheAngle) {
   for (int i = 0; i < 100; ++i) {
     Vector3d um = rng.unit(), uf = rng.unit();
     double a = rng.uniform(0, 3.14159);
-    RotationPart r = RotationPart::oneAngle(um, uf, a);
+    RotationPart r = rotation::OneAngle(um, uf, a);
     double t[2] = {rng.uniform(-3, 3), rng.uniform(-3, 3)};
     EXPECT_NEAR(std::acos(std::min(1.0, (r.rotation(t) * um).dot(uf))), a, 1e-7);
   }
@@ -37,7 +38,7 @@ TEST(RotationPart, OneParallelProjectionIsTheClosestSpin) {
   // Brute force over φ agrees with the closed form.
   Rng rng(3);
   for (int i = 0; i < 50; ++i) {
-    RotationPart r = RotationPart::oneParallel(rng.unit(), rng.unit());
+    RotationPart r = rotation::OneParallel(rng.unit(), rng.unit());
     Matrix3d target = rng.pose().linear();
     double t[1];
     r.project(target, t);
@@ -51,7 +52,7 @@ TEST(RotationPart, OneParallelProjectionIsTheClosestSpin) {
 }
 
 TEST(RotationPart, FreeProjectionRecoversRollPitchYaw) {
-  RotationPart r = RotationPart::free();
+  RotationPart r = rotation::Free{};
   for (double pitch : {-1.5707963267948966, -0.4, 0.0, 1.2, 1.5707963267948966}) {
     double t[3] = {0.3, pitch, -2.0};
     Matrix3d R = r.rotation(t);

@@ -1,0 +1,22 @@
+#pragma once
+// Every built-in rotation shape: a new shape is its own header and source plus one line here (and
+// its source in manifolds/CMakeLists.txt). The order is the registry catalogue's.
+#include <variant>
+
+#include "relpos/manifolds/rotation/fixed.hpp"
+#include "relpos/manifolds/rotation/free.hpp"
+#include "relpos/manifolds/rotation/one_angle.hpp"
+#include "relpos/manifolds/rotation/one_angle_range.hpp"
+#include "relpos/manifolds/rotation/one_parallel.hpp"
+#include "relpos/manifolds/rotation/two_angle.hpp"
+
+namespace relpos::manifolds {
+
+using RotationShape = std::variant<rotation::Fixed,        //
+                                   rotation::OneParallel,  //
+                                   rotation::OneAngle,     //
+                                   rotation::TwoAngle,     //
+                                   rotation::Free,         //
+                                   rotation::OneAngleRange>;
+
+}  // namespace relpos::manifolds
