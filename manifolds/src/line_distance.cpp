@@ -46,13 +46,13 @@ Params LineDistanceManifold::project(const Isometry3d& X) const {
   // Foot of the common perpendicular on the z axis, and the radial direction to the mobile line.
   Vector3d foot_z, foot_m;
   const bool crossing =
-      closestPointsOfLines(Vector3d::Zero(), Vector3d::UnitZ(), a, u, 1e-12, &foot_z, &foot_m);
+      closestPointsOfLines(Vector3d::Zero(), Vector3d::UnitZ(), a, u, kUnitRounding, &foot_z, &foot_m);
   Vector3d radial = foot_m - foot_z;
   radial.z() = 0.0;
-  if (radial.norm() < 1e-12) {
+  if (radial.norm() < kUnitRounding) {
     // The lines meet (or coincide): any radial direction ⊥ u works; take the one ⊥ u in xy.
     radial = crossing ? Vector3d(Vector3d::UnitZ().cross(u)) : Vector3d::UnitX();
-    if (radial.norm() < 1e-12) radial = Vector3d::UnitX();
+    if (radial.norm() < kUnitRounding) radial = Vector3d::UnitX();
   }
   radial.normalize();
   Params th{};

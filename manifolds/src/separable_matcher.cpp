@@ -199,7 +199,10 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
   // Put a non-degenerate angle first (cyclic order keeps the handedness).
   Angle ang[3] = {a, b, c};
   int first = 0;
-  while (first < 3 && std::sin(ang[first].alpha) < 1e-9) ++first;
+  // (An angle within the tolerance of 0 or π was snapped to 0 by normalise; below the rounding
+  // floor 1 − cos α is lost, and the formula below divides by it.)
+  const double degenerate = ctx.tol.angleAboveRounding();
+  while (first < 3 && std::sin(ang[first].alpha) < degenerate) ++first;
   Matrix3d M, F;
   const SourceMask all = a.sources | b.sources | c.sources;
   if (first == 3) {
@@ -232,7 +235,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
         Matrix3d R = F * R2 * M.transpose();
         bool dup = false;
         for (int j = 0; j < out.size(); ++j)
-          dup = dup || (out.parts[j].baseRotation() - R).cwiseAbs().maxCoeff() < 1e-9;
+          dup = dup || (out.parts[j].baseRotation() - R).cwiseAbs().maxCoeff() < degenerate;
         if (!dup) out.add(rotation::Fixed(R), a.err + b.err + c.err);
       }
   return MatchResult::kMatched;
@@ -423,8 +426,10 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
 // Point-plane constraints (exact or ranged), points on lines and pinned points are all planes in
 // translation space: up to three with independent normals, whose relative orientation no rotation
 // of the set changes, make a kPlanes part (segment, strip, parallelepiped, ...).
-bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationAlternatives& rots,
-                 TranslationPart& out) {
+// `given`: the problem's tolerance, before widening by the rotation's uncertainty (tol): the
+// normals' independence is read off the constraints as given.
+bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const Tolerance& given,
+                 const RotationAlternatives& rots, TranslationPart& out) {
   const auto& ts = set.translational;
   int rows = 0;
   for (const auto& f : ts) {
@@ -464,7 +469,9 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(N.topRows(3));
   const auto sv = svd.singularValues();
   int rank = 0;
-  for (int i = 0; i < 3; ++i) rank += sv[i] > 1e-9 * std::max(1.0, sv[0]);
+  // A normal within the angle tolerance of the others' span leaves a singular value below it.
+  const double independent = given.angleAboveRounding() * std::max(1.0, sv[0]);
+  for (int i = 0; i < 3; ++i) rank += sv[i] > independent;
   return rank == k;
 }
 
@@ -518,7 +525,8 @@ MatchResult matchSeparable(MatchContext& ctx) {
   const Tolerance tol = ctx.tol.widened(rot_err);
   // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
   if (hasKind(ctx.set, FundamentalKind::kLineLine) ||
-      (!matchTranslation(ctx.set, tol, rots, trans) && !matchPlanes(ctx.set, tol, rots, trans) &&
+      (!matchTranslation(ctx.set, tol, rots, trans) &&
+       !matchPlanes(ctx.set, tol, ctx.tol, rots, trans) &&
        !matchBoundedCylinder(ctx.set, tol, rots, trans))) {
     r = detail::reanchorForEachRotation(ctx, rots);
     return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);

@@ -17,7 +17,7 @@ Matrix3d Free::rotation(const double* t) const {
 void Free::project(const Matrix3d& R, double* t) const {
   double sp = -R(2, 0);
   t[1] = std::asin(clampUnit(sp));
-  if (std::abs(sp) < 1.0 - 1e-12) {
+  if (std::abs(sp) < 1.0 - kUnitRounding) {
     t[0] = std::atan2(R(2, 1), R(2, 2));
     t[2] = std::atan2(R(1, 0), R(0, 0));
   } else {  // gimbal lock: roll and yaw share one axis; put it all in yaw

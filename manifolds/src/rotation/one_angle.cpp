@@ -21,7 +21,7 @@ void OneAngle::project(const Matrix3d& R, double* t) const {
   // φ puts R0 u_m at the azimuth (about u_f) of R u_m, then θ is the best spin about u_m.
   Vector3d w0 = R0 * u_m, x = R * u_m;
   Vector3d w0p = w0 - w0.dot(u_f) * u_f, xp = x - x.dot(u_f) * u_f;
-  t[0] = (xp.norm() < 1e-12 || w0p.norm() < 1e-12)
+  t[0] = (xp.norm() < kUnitRounding || w0p.norm() < kUnitRounding)
              ? 0.0
              : std::atan2(w0p.cross(xp).dot(u_f), w0p.dot(xp));
   Matrix3d R1 = axisAngle(u_f, t[0]) * R0;

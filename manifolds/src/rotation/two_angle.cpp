@@ -25,7 +25,7 @@ bool TwoAngle::theta(double phi, double* theta) const {
   double C = cos_beta - c * u_m.dot(g);
   double rho = std::hypot(A, B);
   double ratio = rho > 0 ? C / rho : 2.0;
-  bool ok = std::abs(ratio) <= 1.0 + 1e-9;
+  bool ok = std::abs(ratio) <= 1.0 + kAngleRoundingFloor;
   *theta = std::atan2(B, A) + sign * std::acos(clampUnit(ratio));
   return ok;
 }

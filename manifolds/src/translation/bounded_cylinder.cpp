@@ -14,7 +14,7 @@ Parameter BoundedCylinder::parameter(int i) const {
 
 bool BoundedCylinder::projectsExactly() const {
   const Matrix3d I = Matrix3d::Identity();
-  return shapeOf(cylinder, I).d.cross(shapeOf(plane, I).d).norm() < 1e-12;
+  return shapeOf(cylinder, I).d.cross(shapeOf(plane, I).d).norm() < kUnitRounding;
 }
 
 Vector3d BoundedCylinder::translation(const Matrix3d& R, const double* t) const {

@@ -9,7 +9,7 @@ namespace {
 // (normal n): e1 ⊥ d and n, e2 = n × e1, semi-axes r and r / |d·n| (PMF eq. 10).
 void ellipseAxes(const TShape& cyl, const TShape& plane, Vector3d* e1, Vector3d* e2, double* b) {
   Vector3d w = plane.d.cross(cyl.d);
-  *e1 = w.norm() > 1e-12 ? Vector3d(w.normalized()) : cyl.e1;
+  *e1 = w.norm() > kUnitRounding ? Vector3d(w.normalized()) : cyl.e1;
   *e2 = plane.d.cross(*e1);
   *b = cyl.r / std::abs(cyl.d.dot(plane.d));
 }

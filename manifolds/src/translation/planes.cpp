@@ -143,7 +143,7 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
     bool inside = true;
     for (int i = 0; i < rows.k && inside; ++i) {
       if (!(ranged & (1u << i)) || (active & (1u << i))) continue;
-      const double h = rows.n[i].dot(x), slack = 1e-12 * (1.0 + std::abs(h));
+      const double h = rows.n[i].dot(x), slack = kUnitRounding * (1.0 + std::abs(h));
       inside = h >= lo[i] - slack && h <= hi[i] + slack;
     }
     const double d = (x - T).squaredNorm();

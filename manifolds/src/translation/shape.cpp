@@ -47,7 +47,7 @@ namespace {
 // Within rounding of an exact zero, relative to the vector's length: a feature off the axis by
 // more than that moves with the spin, and the spin is then searched like any parameter.
 bool alongAxis(const Vector3d& v, const Vector3d& u) {
-  return v.cross(u).norm() <= 1e-12 * (1.0 + v.norm());
+  return v.cross(u).norm() <= kUnitRounding * (1.0 + v.norm());
 }
 
 }  // namespace

@@ -18,8 +18,8 @@ Vector3d Shell::translation(const Matrix3d& R, const double* t) const {
 void Shell::project(const Matrix3d& R, const Vector3d& T, double* t) const {
   const Vector3d v = T - shapeOf(c, R).c;
   const double r = v.norm();
-  t[0] = r > 1e-300 ? std::atan2(v.y(), v.x()) : 0.0;
-  t[1] = r > 1e-300 ? std::acos(clampUnit(v.z() / r)) : 0.0;
+  t[0] = r > kDivisionGuard ? std::atan2(v.y(), v.x()) : 0.0;
+  t[1] = r > kDivisionGuard ? std::acos(clampUnit(v.z() / r)) : 0.0;
   t[2] = clampToRange(c, r);
 }
 

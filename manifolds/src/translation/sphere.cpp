@@ -14,7 +14,7 @@ Vector3d Sphere::translation(const Matrix3d& R, const double* t) const {
 
 void Sphere::project(const Matrix3d& R, const Vector3d& T, double* t) const {
   const Vector3d v = T - shapeOf(c, R).c;
-  if (v.norm() < 1e-300) {
+  if (v.norm() < kDivisionGuard) {
     t[0] = t[1] = 0.0;
   } else {
     t[0] = std::atan2(v.y(), v.x());

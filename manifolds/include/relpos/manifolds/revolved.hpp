@@ -40,5 +40,7 @@ class RevolvedManifold final : public MixedManifoldBase<RevolvedManifold> {
   Vector3d c_, a_;
   SeparableManifold inner_;
 };
+// The largest built-in type (core/manifold.hpp: kManifoldStorage leaves room for plugins' too).
+static_assert(sizeof(RevolvedManifold) <= kManifoldStorage, "revolved manifold too large");
 
 }  // namespace relpos::manifolds

@@ -39,5 +39,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   unsigned closed_form_ = 0u;
   bool spin_closed_ = false;  // bit 1 of closed_form_: the spin θ (RotationPart::spinAxis)
 };
+// Stored inline in a Branch (ManifoldHolder): the largest shapes of the two variants together.
+static_assert(sizeof(SeparableManifold) <= kManifoldStorage, "separable manifold too large");
 
 }  // namespace relpos::manifolds
