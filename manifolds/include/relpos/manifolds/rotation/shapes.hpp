@@ -1,6 +1,7 @@
 #pragma once
-// Every built-in rotation shape: a new shape is its own header and source plus one line here (and
-// its source in manifolds/CMakeLists.txt). The order is the registry catalogue's.
+// Every built-in rotation shape. A new shape is its own header and source, its #include and one
+// line in the list below, and its source in manifolds/CMakeLists.txt; the registry's catalogue
+// (catalogue.cpp) and every std::visit pick it up from here. The order is the catalogue's.
 #include <variant>
 
 #include "relpos/manifolds/rotation/fixed.hpp"
