@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 
@@ -322,7 +321,7 @@ bool deferSet(void* state, const ConstraintSet& derived) {
 // wrapped them in the turn, they would be wrong poses.
 bool allRevolved(const Solution& solution, std::size_t first) {
   for (std::size_t b = first; b < solution.branches.size(); ++b)
-    if (std::strcmp(solution.branches[b].manifold->typeName(), "Revolved") != 0) return false;
+    if (solution.branches[b].manifold->kind() != ManifoldKind::kRevolved) return false;
   return true;
 }
 
