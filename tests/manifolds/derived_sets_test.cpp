@@ -9,8 +9,8 @@
 
 #include "constraint_measure.hpp"
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solution.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::test {
 namespace {

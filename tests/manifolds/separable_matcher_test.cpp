@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solution.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::test {
 namespace {
