@@ -11,7 +11,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,9 +69,9 @@ Args parseArgs(int argc, char** argv, int first) {
     else if (s == "--collision")
       a.collision = true;
     else if (s == "--clearance")
-      a.filter.clearance = parseNonNegative(s, value()), a.collision_option = true;
+      a.result.clearance = parseNonNegative(s, value()), a.collision_option = true;
     else if (s == "--collision-samples")
-      a.filter.samples = static_cast<int>(parseInt(s, value(), 0, 1000000)),
+      a.result.collision_samples = static_cast<int>(parseInt(s, value(), 0, 1000000)),
       a.collision_option = true;
     else if (s == "-o")
       a.out = value(), a.out_given = true;
@@ -113,51 +112,16 @@ bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* 
   return true;
 }
 
-nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solution& sol,
-                                  const relpos::ResultOptions& options) {
-  std::string line;
-  relpos::writeResultLine(pb, sol, options, line);
-  return nlohmann::ordered_json::parse(line);  // the writer writes UTF-8 whatever names hold
-}
-
-bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,
-                     const relpos::Solution& sol, relpos::collision::MeshCache& cache,
-                     nlohmann::ordered_json* result, std::vector<relpos::Diagnostic>* errors,
-                     std::vector<relpos::Diagnostic>* warnings) {
-  auto scene = relpos::collision::buildScene(pb, spec_dir, cache, errors, warnings);
-  if (!scene) return false;
-  relpos::collision::FilterOptions options = a.filter;
-  options.window = a.result.window;
-  options.seed = a.result.seed;
-  int free_branches = 0;
-  for (std::size_t b = 0; b < sol.branches.size(); ++b) {
-    const relpos::Branch& branch = sol.branches[b];
-    // The nearest pose resultToJson already searched for (its parameters are stored as doubles,
-    // so the pose is rebuilt exactly instead of searching again).
-    const auto& near = (*result)["branches"][b]["nearest"];
-    relpos::NearestPose n;
-    for (int i = 0; i < branch.manifold->dof(); ++i)
-      n.parameters[i] = near["parameters"][i].get<double>();
-    n.pose = branch.manifold->pose(n.parameters);
-    n.distance = near["distance"].get<double>();
-    const auto c = relpos::collision::filterBranch(*scene, branch, n, pb.mobile.pose, options);
-    free_branches += c.has_nearest_free || !c.free_samples.empty();
-    (*result)["branches"][b]["collision"] = relpos::collision::collisionToJson(
-        c, branch.manifold->dof(), scene->checkedAgainst(), options.clearance);
-  }
-  (*result)["collision_free_branches"] = free_branches;
-  return true;
-}
-
-// The collision fields of a spec file, its meshes' problems reported on stderr.
-bool addCollisionFields(const std::string& file, const Args& a, const relpos::Problem& pb,
-                        const relpos::Solution& sol, nlohmann::ordered_json* result) {
-  relpos::collision::MeshCache cache;
+// The collision scene of a spec file, its meshes' problems reported on stderr; nullptr when it
+// cannot be built.
+std::unique_ptr<relpos::collision::Scene> loadScene(const std::string& file,
+                                                    const relpos::Problem& pb,
+                                                    relpos::collision::MeshCache& cache) {
   std::vector<relpos::Diagnostic> errors, warnings;
-  const bool ok = collisionFields(fs::path(file).parent_path().string(), a, pb, sol, cache, result,
-                                  &errors, &warnings);
+  auto scene = relpos::collision::buildScene(pb, fs::path(file).parent_path().string(), cache,
+                                             &errors, &warnings);
   printDiagnostics(file, errors, warnings);
-  return ok;
+  return scene;
 }
 
 int cmdSolve(const Args& a, const Registry& reg) {
@@ -171,22 +135,26 @@ int cmdSolve(const Args& a, const Registry& reg) {
   relpos::Workspace ws;
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
-  nlohmann::ordered_json result = resultTree(pb, sol, a.result);
+  relpos::Report report;
   if (a.collision) {
+    relpos::collision::MeshCache cache;
+    std::unique_ptr<relpos::collision::Scene> scene;
     try {
-      if (!addCollisionFields(a.positional[0], a, pb, sol, &result)) return kExitInvalid;
+      scene = loadScene(a.positional[0], pb, cache);
     } catch (const std::exception& e) {
-      // The filter samples the branches: a plugin's manifold that throws there is an answer
-      // naming the plugin, not exit 1 (the writer guards itself the same way).
-      result = resultTree(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
-                          a.result);
-      result["collision_free_branches"] = 0;
+      // Reading the meshes threw: an answer, as when the filter throws (evaluate).
+      relpos::evaluate(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
+                       a.result, report);
+      report.collision_checked = true;
     }
+    if (!scene && !report.collision_checked) return kExitInvalid;
+    if (scene) relpos::evaluate(pb, sol, a.result, report, scene.get());
+  } else {
+    relpos::evaluate(pb, sol, a.result, report);
   }
-  // Strings from the input (a default name from a file name holding 0xFF) may not be UTF-8:
-  // replaced, where the default handler would throw.
-  const std::string text =
-      result.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  std::string text;
+  relpos::writeReport(report, relpos::kResultDocument, text);
+  text += '\n';
   if (!a.out.empty()) {
     replaceFile(a.out, text);
     return kExitOk;
@@ -379,11 +347,14 @@ int cmdTable(const Args& a, const Registry& reg) {
                 relpos::toString(sol.status), sol.branches.size(),
                 dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
     if (a.collision) {  // the collision-free branches (SPEC.md §2 collision_free_branches)
-      nlohmann::ordered_json result = resultTree(pb, sol, a.result);
-      if (addCollisionFields(f, a, pb, sol, &result))
-        std::printf("  %13d", result["collision_free_branches"].get<int>());
-      else
+      relpos::collision::MeshCache cache;
+      if (const auto scene = loadScene(f, pb, cache)) {
+        relpos::Report report;
+        relpos::evaluate(pb, sol, a.result, report, scene.get());
+        std::printf("  %13d", report.collision_free_branches);
+      } else {
         std::printf("  %13s", "invalid"), ++invalid;
+      }
     }
     std::printf("\n");
   }
