@@ -23,6 +23,7 @@
 #include "output_file.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/result_writer.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "safe_text.hpp"
 
 namespace relpos::cli {
