@@ -16,17 +16,12 @@ namespace relpos::cli {
 // Diagnostics go to stderr one per line, whatever the names they quote hold (a newline, 0xFF).
 void printDiagnostics(const std::string& file, const std::vector<relpos::Diagnostic>& errors,
                       const std::vector<relpos::Diagnostic>& warnings) {
-  for (const auto& w : warnings)
-    std::cerr << oneLine(relpos::formatDiagnostic(file, w)) << " (warning)\n";
-  for (const auto& e : errors) std::cerr << oneLine(relpos::formatDiagnostic(file, e)) << "\n";
+  // formatDiagnostic's line is one line of valid UTF-8 already (the one place that escapes).
+  for (const auto& w : warnings) std::cerr << relpos::formatDiagnostic(file, w) << " (warning)\n";
+  for (const auto& e : errors) std::cerr << relpos::formatDiagnostic(file, e) << "\n";
 }
 
 bool loadProblem(const std::string& file, const Registry& reg, relpos::Problem* pb) {
-  std::error_code ec;
-  if (fs::is_directory(file, ec)) {  // opening it succeeds, reading it fails: say what it is
-    std::cerr << oneLine(file + ": is a directory, not a spec file") << "\n";
-    return false;
-  }
   relpos::ParseResult r = relpos::parseSpecFile(file, reg);
   printDiagnostics(file, r.errors, r.warnings);
   if (!r.problem) return false;

@@ -110,7 +110,7 @@ struct WorkerState {
   Workspace ws;
   Solution sol;
   Report report;
-  std::string text, line;  // the spec's text, its result line
+  std::string line;  // its result line
   std::string name;        // the spec's name once it is known (for a line about a failure)
 };
 
@@ -126,8 +126,7 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
   if (!item.file.empty()) {
     parsed = parseSpecFile(item.file, reg);
   } else {
-    state.text.assign(item.text);
-    parsed = parseSpec(state.text, reg, input.defaultName(item));
+    parsed = parseSpec(item.text, reg, input.defaultName(item));
   }
   if (!parsed.problem) {
     out.name = specName(parsed);

@@ -678,7 +678,7 @@ class Parser {
 std::string readFile(const std::string& file, std::string* error) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) {
-    *error = "cannot read the file: it is a directory";
+    *error = "is a directory, not a spec file";
     return {};
   }
   std::ifstream in(file, std::ios::binary);
@@ -697,7 +697,7 @@ std::string readFile(const std::string& file, std::string* error) {
 
 }  // namespace
 
-ParseResult parseSpec(const std::string& text, const Registry& registry,
+ParseResult parseSpec(std::string_view text, const Registry& registry,
                       const std::string& default_name) {
   ParseResult out;
   out.name = detail::toValidUtf8(default_name);
