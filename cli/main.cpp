@@ -11,9 +11,10 @@
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/rules/builtin.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/text.hpp"
 
 using namespace relpos::cli;
+using relpos::oneLine;
 
 namespace {
 

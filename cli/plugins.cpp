@@ -9,7 +9,7 @@
 #include "file_text.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/text.hpp"
 
 namespace fs = std::filesystem;
 

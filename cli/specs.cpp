@@ -7,7 +7,7 @@
 
 #include "cli.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/text.hpp"
 
 namespace fs = std::filesystem;
 

@@ -24,7 +24,7 @@
 #include "relpos/core/solver.hpp"
 #include "relpos/io/result_writer.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/text.hpp"
 
 namespace relpos::cli {
 namespace {

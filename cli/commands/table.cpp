@@ -7,7 +7,7 @@
 
 #include "cli.hpp"
 #include "relpos/core/solver.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/text.hpp"
 
 namespace fs = std::filesystem;
 
