@@ -32,9 +32,13 @@ const Command kCommands[] = {
      "solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
      "               [--collision [--clearance C] [--collision-samples N]]",
      "Solves one spec and prints its result document (docs/spec.md, \"The result\"), indented.",
-     {kSamples, kWindow, kSeed,
+     {kSamples,
+      kWindow,
+      kSeed,
       {"-o OUT.json", "write the result to OUT.json (replaced whole, only once it is complete)"},
-      kCollision, kClearance, kCollisionSamples},
+      kCollision,
+      kClearance,
+      kCollisionSamples},
      cmdSolve,
      true},
     {"rules",
@@ -50,8 +54,12 @@ const Command kCommands[] = {
      "table DIR-or-SPEC... [--repeat N] [--collision ...]",
      "One row per spec (a folder's *.json in name order): status, branches, their DOF and the "
      "median solve time.",
-     {{"--repeat N", "solves per spec for the median time (default 200)"}, kCollision,
-      kClearance, kCollisionSamples, kWindow, kSeed},
+     {{"--repeat N", "solves per spec for the median time (default 200)"},
+      kCollision,
+      kClearance,
+      kCollisionSamples,
+      kWindow,
+      kSeed},
      cmdTable,
      true},
     {"batch",
@@ -59,12 +67,21 @@ const Command kCommands[] = {
      "Solves many specs (a folder's *.json, or one spec per line of a JSONL file) and writes one "
      "result line each, in input order; a summary on stderr.",
      {{"--jobs N", "worker threads (default: one per core)"},
-      {"-o OUT.jsonl", "write the lines to OUT.jsonl instead of standard output"}, kSamples,
-      kWindow, kSeed, kCollision, kClearance, kCollisionSamples},
+      {"-o OUT.jsonl", "write the lines to OUT.jsonl instead of standard output"},
+      kSamples,
+      kWindow,
+      kSeed,
+      kCollision,
+      kClearance,
+      kCollisionSamples},
      cmdBatch,
      true},
     {"help", "help [COMMAND]", "Prints the usage, or one command's help.", {}, cmdNone, false},
-    {"version", "--version", "Prints relpos's version and its plugin ABI version.", {}, cmdNone,
+    {"version",
+     "--version",
+     "Prints relpos's version and its plugin ABI version.",
+     {},
+     cmdNone,
      false},
 };
 
@@ -110,8 +127,7 @@ void printOption(std::ostream& out, const Option& o) {
 
 const Command* findCommand(const std::string& name) {
   for (const Command& c : kCommands)
-    if (name == c.name || (name == "--version" && std::strcmp(c.name, "version") == 0))
-      return &c;
+    if (name == c.name || (name == "--version" && std::strcmp(c.name, "version") == 0)) return &c;
   return nullptr;
 }
 

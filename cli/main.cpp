@@ -10,8 +10,8 @@
 #include "help.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "relpos/io/text.hpp"
+#include "relpos/rules/builtin.hpp"
 
 using namespace relpos::cli;
 using relpos::oneLine;

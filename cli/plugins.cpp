@@ -8,8 +8,8 @@
 #include "cli.hpp"
 #include "file_text.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/plugins/loader.hpp"
 #include "relpos/io/text.hpp"
+#include "relpos/plugins/loader.hpp"
 
 namespace fs = std::filesystem;
 

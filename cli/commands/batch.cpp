@@ -111,7 +111,7 @@ struct WorkerState {
   Solution sol;
   Report report;
   std::string line;  // its result line
-  std::string name;        // the spec's name once it is known (for a line about a failure)
+  std::string name;  // the spec's name once it is known (for a line about a failure)
 };
 
 // Parses and solves one spec: its result line into state.line (every problem of an invalid spec

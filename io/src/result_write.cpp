@@ -1,6 +1,6 @@
 // The result document (SPEC.md §2), written straight to text from a Report: a batch writes one
 // per spec, and building a JSON tree only to print it cost more than solving and parsing
-// together. Strings are escaped as JSON needs and always valid UTF-8 (result_line_test checks the
+// together. Strings are escaped as JSON needs and always valid UTF-8 (result_write_test checks the
 // document and that every number reads back).
 #include <algorithm>
 #include <charconv>
@@ -56,8 +56,8 @@ class Writer {
   void integerOrNull(int v) { v >= 0 ? integer(v) : null(); }
   // The shortest text that reads back as exactly v (std::to_chars), with ".0" when it would look
   // like an integer: every reader then takes it as a double (simdjson does not refuse 21 digits
-  // as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat). Non-finite:
-  // null.
+  // as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat).
+  // Non-finite: null.
   void number(double v) {
     if (!std::isfinite(v)) return null();
     element();
@@ -301,7 +301,8 @@ void writeBranch(Writer& w, const Report& r, std::size_t b) {
 }  // namespace
 
 void writeReport(const Report& r, ResultFormat format, std::string& out) {
-  Writer w(out, format);  // overwrites `out` from its start (keeping its size saves zero-filling it)
+  Writer w(out,
+           format);  // overwrites `out` from its start (keeping its size saves zero-filling it)
   w.beginObject();
   w.key("relpos");
   w.integer(1);

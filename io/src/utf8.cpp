@@ -1,8 +1,8 @@
 #include "utf8.hpp"
 
-#include "relpos/io/text.hpp"
-
 #include <cstdio>
+
+#include "relpos/io/text.hpp"
 
 namespace relpos::detail {
 

@@ -129,8 +129,9 @@ TEST(Cli, HelpAndVersion) {
 // line for each of its options (and the common ones), exit 0, nothing on stderr.
 TEST(Cli, EachCommandDescribesEachOfItsOptions) {
   const std::pair<const char*, std::vector<const char*>> commands[] = {
-      {"solve", {"--samples N", "--window W", "--seed S", "-o OUT.json", "--collision",
-                 "--clearance C", "--collision-samples N"}},
+      {"solve",
+       {"--samples N", "--window W", "--seed S", "-o OUT.json", "--collision", "--clearance C",
+        "--collision-samples N"}},
       {"batch", {"--jobs N", "-o OUT.jsonl", "--samples N", "--collision"}},
       {"table", {"--repeat N", "--collision"}},
       {"rules", {"--coverage"}},

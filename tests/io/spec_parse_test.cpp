@@ -159,8 +159,8 @@ TEST(SpecParse, OptionalFieldsFollowTheType) {
   r = parse(
       spec(R"({"type": "angle", "fixed": "K", "mobile": "ax", "value": 1, "parallel": false})"));
   ASSERT_TRUE(r.problem);
-  EXPECT_TRUE(warnedAt(r, "constraints[0].parallel",
-                       "only meaningful for a line-line distance (ignored)"));
+  EXPECT_TRUE(
+      warnedAt(r, "constraints[0].parallel", "only meaningful for a line-line distance (ignored)"));
 }
 
 TEST(SpecParse, PoseForms) {

@@ -20,9 +20,9 @@ TEST(Utf8, ValidUtf8IsKeptAndEachIllFormedSubpartReplacedOnce) {
   // Table 3-7's edges and how many U+FFFD each gives (Unicode 15 §3.9, table 3-8): overlong
   // forms, surrogates and beyond U+10FFFF one per byte; a sequence cut short, one in all.
   const std::pair<std::string, int> cases[] = {
-      {"\xC0\xAF", 2},     {"\xE0\x80\xAF", 3}, {"\xED\xA0\x80", 3}, {"\xF4\x90\x80\x80", 4},
-      {"\x80", 1},         {"\xFF", 1},         {"\xE2\x82", 1},     {"\xF0\x9F\x98", 1},
-      {"\xF0\x9F\x98x", 1}};
+      {"\xC0\xAF", 2},         {"\xE0\x80\xAF", 3}, {"\xED\xA0\x80", 3},
+      {"\xF4\x90\x80\x80", 4}, {"\x80", 1},         {"\xFF", 1},
+      {"\xE2\x82", 1},         {"\xF0\x9F\x98", 1}, {"\xF0\x9F\x98x", 1}};
   for (const auto& [bad, replacements] : cases) {
     EXPECT_FALSE(isValidUtf8(bad)) << bad;
     const std::string fixed = validUtf8("a" + bad + "b");
@@ -45,8 +45,8 @@ TEST(Utf8, OneLineEscapesControlCharactersAndIllFormedBytes) {
                     "e\x7F"
                     "f\xFF"),
             "a\\nb\\rc\\td\\x01e\\x7Ff\\xFF");
-  EXPECT_EQ(oneLine("caf\xC3\xA9 \\n"), "caf\xC3\xA9 \\n");  // UTF-8 and backslashes stay
-  EXPECT_EQ(oneLine("caf\xC3"), "caf\\xC3");                   // cut short: its bytes shown
+  EXPECT_EQ(oneLine("caf\xC3\xA9 \\n"), "caf\xC3\xA9 \\n");            // UTF-8 and backslashes stay
+  EXPECT_EQ(oneLine("caf\xC3"), "caf\\xC3");                           // cut short: its bytes shown
   EXPECT_EQ(oneLine("x\xC2\x85y\xE2\x80\xA8z"), "x\\u0085y\\u2028z");  // NEL, LINE SEPARATOR
   // Escaping twice changes nothing.
   const std::string once = oneLine("a\n\xFF\x01\xC2\x85");

@@ -10,8 +10,8 @@
 #include "bad/manifold_throws.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/report/evaluate.hpp"
 #include "relpos/plugins/loader.hpp"
+#include "relpos/report/evaluate.hpp"
 #include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 

@@ -2,6 +2,8 @@
 // the nearest pose is the branch's pose nearest the initial pose (no dense sample beats it), the
 // samples lie on the branch (the tests' own evaluator of SPEC.md §1), the best branch is the one
 // nearest, and the collision verdicts agree with the scene.
+#include "relpos/report/evaluate.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +17,6 @@
 #include "evaluator.hpp"
 #include "relpos/collision/scene.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/report/evaluate.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "relpos/collision/mesh.hpp"
+#include "relpos/core/diagnostic.hpp"
 #include "relpos/core/problem.hpp"
 #include "relpos/io/report.hpp"
-#include "relpos/core/diagnostic.hpp"
 
 namespace relpos::collision {
 

@@ -43,7 +43,7 @@ struct BranchReport {
   int translational_dof = -1;
   std::string manifold;  // Manifold::describe()
   std::array<Parameter, kMaxDof> parameters{};
-  NearestPose nearest;        // the branch's pose nearest the initial pose
+  NearestPose nearest;           // the branch's pose nearest the initial pose
   std::size_t first_sample = 0;  // its samples: Report::samples[first_sample, + sample_count)
   std::size_t sample_count = 0;
 };

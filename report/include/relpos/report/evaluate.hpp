@@ -14,11 +14,11 @@
 namespace relpos {
 
 struct ReportOptions {
-  int samples = 0;        // poses per branch (--samples)
-  double window = 1.0;    // half-width for unbounded length parameters (--window)
+  int samples = 0;         // poses per branch (--samples)
+  double window = 1.0;     // half-width for unbounded length parameters (--window)
   std::uint64_t seed = 0;  // the samples' generator (deterministic)
   // With a scene only:
-  double clearance = 0.0;     // --clearance
+  double clearance = 0.0;      // --clearance
   int collision_samples = 64;  // --collision-samples: the filter's own samples per branch
 };
 
