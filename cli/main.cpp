@@ -8,10 +8,10 @@
 
 #include "cli.hpp"
 #include "help.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
 #include "relpos/io/text.hpp"
-#include "relpos/rules/builtin.hpp"
 
 using namespace relpos::cli;
 using relpos::oneLine;

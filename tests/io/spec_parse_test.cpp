@@ -4,8 +4,8 @@
 
 #include <fstream>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {

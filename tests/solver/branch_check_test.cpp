@@ -9,8 +9,8 @@
 
 #include "evaluator.hpp"
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/manifolds/separable.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
@@ -22,17 +22,13 @@ Vector3d g_offset = Vector3d::Zero();
 bool g_nan = false;
 
 MatchResult onePoseMatcher(MatchContext& ctx) {
-  using manifolds::RotationPart;
-  using manifolds::TranslationKind;
-  using manifolds::TranslationPart;
-  TranslationPart t;
-  t.kind = TranslationKind::kPoint;
   const double x = g_nan ? std::numeric_limits<double>::quiet_NaN() : 0.0;
   // T = S_f − R S_m with R = I: the mobile origin goes to the fixed point.
-  t.c1 = Fundamental::pointPoint(Vector3d::Zero(), Vector3d(x, 0, 0) + g_offset, 0.0, 1);
+  const manifolds::translation::Point t(
+      Fundamental::pointPoint(Vector3d::Zero(), Vector3d(x, 0, 0) + g_offset, 0.0, 1));
   ctx.out.branches.emplace_back();
   ctx.out.branches.back().manifold.emplace<manifolds::SeparableManifold>(
-      RotationPart::fixed(Matrix3d::Identity()), t);
+      manifolds::rotation::Fixed(Matrix3d::Identity()), t);
   return MatchResult::kMatched;
 }
 

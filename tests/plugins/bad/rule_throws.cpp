@@ -22,7 +22,8 @@ void decompose(const InputConstraint&, const Feature&, SourceMask s, Decompositi
   alt.push_back(f);
 }
 
-void ruleThrows(const Fundamental& a, const Fundamental& b, const Tolerance&, RuleOutput&) {
+void ruleThrows(const Fundamental& a, const Fundamental& b, const Tolerance&, RuleOutput&,
+                const void*) {
   if (a.custom == g_kind && b.custom == g_kind) throw std::runtime_error("the rule blew up");
 }
 
