@@ -12,7 +12,7 @@
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 
 namespace {
 
@@ -98,7 +98,7 @@ void BM_Write(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const std::size_t k = i++ % ps.size();
-    relpos::writeResultLine(ps[k], sols[k], relpos::ResultOptions(), out);
+    relpos::writeResultLine(ps[k], sols[k], relpos::ReportOptions(), out);
     benchmark::DoNotOptimize(out.data());
   }
 }
@@ -113,7 +113,7 @@ void BM_WholeLine(benchmark::State& state) {
     relpos::ParseResult r =
         relpos::parseSpec(lines()[i++ % lines().size()], relpos::builtinRegistry());
     relpos::solve(*r.problem, relpos::builtinRegistry(), relpos::SolverOptions(), ws, s);
-    relpos::writeResultLine(*r.problem, s, relpos::ResultOptions(), out);
+    relpos::writeResultLine(*r.problem, s, relpos::ReportOptions(), out);
     benchmark::DoNotOptimize(out.data());
   }
 }

@@ -1,43 +1,34 @@
 #pragma once
-// What the relpos command's files share: options, exit codes, spec discovery, collision fields.
+// What the relpos command's files share: options, spec discovery and loading, the commands.
 #include <istream>
-#include <nlohmann/json.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "errors.hpp"
-#include "relpos/collision/branch_filter.hpp"
+#include "relpos/collision/scene.hpp"
+#include "relpos/core/diagnostic.hpp"
 #include "relpos/core/registry.hpp"
-#include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 
 namespace relpos::cli {
-
-inline const char* const kUsage =
-    "usage:\n"
-    "  relpos solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
-    "               [--collision [--clearance C] [--collision-samples N]]\n"
-    "  relpos rules [--coverage DIR-or-SPEC...]\n"
-    "  relpos table DIR-or-SPEC... [--repeat N] [--collision ...]\n"
-    "  relpos batch DIR-or-FILE.jsonl [--jobs N] [-o OUT.jsonl] [solve options]\n"
-    "  relpos --version\n"
-    "every command: [--plugin LIB.so]... [--allow-override] [--help];\n"
-    "  RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
 
 struct Args {
   int jobs = 0;  // batch: worker threads (0: every core)
   std::vector<std::string> positional;
   bool coverage = false;
-  relpos::ResultOptions result;
-  std::string out;  // -o
+  relpos::ReportOptions result;  // --samples, --window, --seed, --clearance, --collision-samples
+  std::string out;               // -o
   bool out_given = false;
   int repeat = 200;
   std::vector<std::string> plugins;
   bool allow_override = false;
   bool collision = false;
   bool collision_option = false;  // --clearance or --collision-samples given
-  relpos::collision::FilterOptions filter;
 };
+
+// The options after the command (argv[first]...). Throws UsageError.
+Args parseArgs(int argc, char** argv, int first);
 
 // The spec files of folders (their *.json in name order) and files given on the command line.
 std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
@@ -45,19 +36,27 @@ std::vector<std::string> specFiles(const std::vector<std::string>& inputs);
 // Everything left in the stream, read in chunks (it may be a pipe, whose size is unknown).
 std::string readAll(std::istream& in);
 
-// The result line as a JSON tree, to add fields to (collision filtering): the writer writes UTF-8
-// whatever the names it copies hold, so the parse cannot fail on them.
-nlohmann::ordered_json resultTree(const relpos::Problem& pb, const relpos::Solution& sol,
-                                  const relpos::ResultOptions& options);
+// Diagnostics on stderr, one per line, "FILE: path: message" (warnings marked).
+void printDiagnostics(const std::string& file, const std::vector<relpos::Diagnostic>& errors,
+                      const std::vector<relpos::Diagnostic>& warnings);
 
-// Adds SPEC.md §2's collision fields to a result: a `collision` object per branch and
-// `collision_free_branches`. False when the scene cannot be built (errors say why).
-bool collisionFields(const std::string& spec_dir, const Args& a, const relpos::Problem& pb,
-                     const relpos::Solution& sol, relpos::collision::MeshCache& cache,
-                     nlohmann::ordered_json* result, std::vector<relpos::Diagnostic>* errors,
-                     std::vector<relpos::Diagnostic>* warnings);
+// Reads and parses a spec file, its problems on stderr; false when it is not a valid spec.
+bool loadProblem(const std::string& file, const relpos::Registry& reg, relpos::Problem* pb);
 
-// relpos batch (SPEC.md §3).
+// The collision scene of a spec file, its meshes' problems on stderr; nullptr when it cannot be
+// built.
+std::unique_ptr<relpos::collision::Scene> loadScene(const std::string& file,
+                                                    const relpos::Problem& pb,
+                                                    relpos::collision::MeshCache& cache);
+
+// Loads, in order, the plugins of RELPOS_PLUGIN_PATH, of --plugin, and of the "plugins" lists of
+// the specs the command will read. The first failure is one line on stderr; false then.
+bool loadPlugins(const std::string& cmd, const Args& a, relpos::Registry& reg);
+
+// The commands (SPEC.md §3), one file each in commands/.
+int cmdSolve(const Args& a, const relpos::Registry& reg);
+int cmdRules(const Args& a, const relpos::Registry& reg);
+int cmdTable(const Args& a, const relpos::Registry& reg);
 int cmdBatch(const Args& a, const relpos::Registry& reg);
 
 }  // namespace relpos::cli

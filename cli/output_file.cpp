@@ -51,15 +51,20 @@ std::string folderOf(const std::string& path) {
 }
 
 // Writes all of text, through partial writes and signals; false with errno set on failure.
-bool writeAll(int fd, std::string_view text) {
-  while (!text.empty()) {
-    const ssize_t n = ::write(fd, text.data(), text.size());
+// Writes all of text (a write may take part of it, or be interrupted); false with errno set when
+// the output refuses, *written then saying how much of it went out.
+bool writeAll(int fd, std::string_view text, std::size_t* written = nullptr) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
+      if (written) *written = done;
       return false;
     }
-    text.remove_prefix(static_cast<std::size_t>(n));
+    done += static_cast<std::size_t>(n);
   }
+  if (written) *written = done;
   return true;
 }
 
@@ -203,19 +208,14 @@ LineSink::~LineSink() {
 bool LineSink::write(std::string_view lines, std::size_t count) {
   if (!error_.empty()) return false;
   std::size_t done = 0;
-  while (done < lines.size()) {
-    const ssize_t n = ::write(fd_, lines.data() + done, lines.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      // The lines that made it whole are kept: up to the last '\n' written.
-      const int err = errno;
-      const std::size_t whole = lines.substr(0, done).rfind('\n') + 1;  // 0 when none
-      bytes_ += whole;
-      lines_ += static_cast<std::size_t>(std::count(lines.begin(), lines.begin() + whole, '\n'));
-      fail(err);
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
+  if (!writeAll(fd_, lines, &done)) {
+    // The lines that made it whole are kept: up to the last '\n' written.
+    const int err = errno;
+    const std::size_t whole = lines.substr(0, done).rfind('\n') + 1;  // 0 when none
+    bytes_ += whole;
+    lines_ += static_cast<std::size_t>(std::count(lines.begin(), lines.begin() + whole, '\n'));
+    fail(err);
+    return false;
   }
   bytes_ += lines.size();
   lines_ += count;

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
-
-#include "relpos/io/result_writer.hpp"
+#include <string>
 
 namespace relpos::collision {
 namespace {
@@ -132,32 +131,6 @@ BranchCollision filterBranch(const Scene& scene, const Branch& branch, const Nea
   out.nearest_free.pose = m.pose(t);
   out.nearest_free.distance = s.distance(t);
   return out;
-}
-
-nlohmann::ordered_json collisionToJson(const BranchCollision& c, int dof,
-                                       const std::vector<std::string>& checked_against,
-                                       double clearance) {
-  nlohmann::ordered_json j;
-  j["checked_against"] = checked_against;
-  j["clearance"] = clearance;
-  j["nearest_collides"] = c.nearest_collides;
-  nlohmann::ordered_json contacts = nlohmann::ordered_json::array();
-  for (const auto& k : c.nearest_contacts)
-    contacts.push_back({{"object", k.object}, {"depth", k.depth}});
-  j["nearest_contacts"] = contacts;
-  if (c.has_nearest_free) {
-    nlohmann::ordered_json f = poseToJson(c.nearest_free.pose, c.nearest_free.parameters, dof);
-    f["distance"] = c.nearest_free.distance;
-    j["nearest_free"] = f;
-  } else {
-    j["nearest_free"] = nullptr;
-    j["nearest_free_reason"] = c.nearest_free_reason;
-  }
-  nlohmann::ordered_json samples = nlohmann::ordered_json::array();
-  for (const auto& f : c.free_samples) samples.push_back(poseToJson(f.pose, f.parameters, dof));
-  j["free_samples"] = samples;
-  j["blocked_samples"] = c.blocked_samples;
-  return j;
 }
 
 }  // namespace relpos::collision

@@ -1,102 +1,108 @@
-// The result document (SPEC.md §2), written straight to text: a batch writes one per spec, and
-// building a JSON tree only to print it cost more than solving and parsing together. Numbers are
-// the shortest text that reads back as the same double (std::to_chars); strings are escaped as
-// JSON needs and always valid UTF-8. resultToJson is simply the parse of this text
-// (result_line_test checks both: every number read back, and the document).
+// The result document (SPEC.md §2), written straight to text from a Report: a batch writes one
+// per spec, and building a JSON tree only to print it cost more than solving and parsing
+// together. Strings are escaped as JSON needs and always valid UTF-8 (result_write_test checks the
+// document and that every number reads back).
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <limits>
 #include <nlohmann/json.hpp>
-#include <optional>
-#include <random>
 
-#include "relpos/core/solver.hpp"
 #include "relpos/io/result_writer.hpp"
 #include "utf8.hpp"
 
 namespace relpos {
 namespace {
 
-// ordered_json: fields come out in the order of SPEC.md §2.
-using json = nlohmann::ordered_json;
-
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 // Appends into a string used as a raw buffer (sized ahead, trimmed at the end): a line is a few
 // hundred short pieces, and std::string's append is an out-of-line call each. The text is final
-// when the Writer goes out of scope.
+// when the Writer goes out of scope. Commas, and in the indented layout the line breaks, come
+// from the nesting the Writer tracks: callers only open, name and close.
 class Writer {
  public:
-  explicit Writer(std::string& out) : out_(out) {
+  Writer(std::string& out, ResultFormat format) : out_(out), format_(format) {
     out_.resize(std::max<std::size_t>(out_.capacity(), 512));
   }
   ~Writer() { out_.resize(n_); }
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
 
-  template <std::size_t N>
-  void raw(const char (&s)[N]) {
-    put(s, N - 1);
-  }
-  // A member's key, after a comma unless it opens its object.
+  void beginObject() { open('{'); }
+  void endObject() { close('}'); }
+  void beginArray() { open('['); }
+  void endArray() { close(']'); }
+
+  // A member's key; its value follows.
   template <std::size_t N>
   void key(const char (&k)[N]) {
-    room(N + 3);
-    if (out_[n_ - 1] != '{') out_[n_++] = ',';
+    element();
+    room(N + 4);
     out_[n_++] = '"';
     put(k, N - 1);
-    put("\":", 2);
+    format_.indented ? put("\": ", 3) : put("\":", 2);
+    after_key_ = true;
   }
-  // The shortest text that reads back as exactly v (std::to_chars), with ".0" when it would look
-  // like an integer: every reader then takes it as a double (nlohmann keeps it a float, simdjson
-  // does not refuse 21 digits as too wide an integer, -0.0 keeps its sign). Non-finite: null.
-  void number(double v) {
-    if (!std::isfinite(v)) return raw("null");
-    room(32);  // at most 24 characters ("-2.2250738585072014e-308"), and ".0"
-    char* const first = &out_[n_];
-    char* last = std::to_chars(first, first + 30, v).ptr;
-    if (std::find_if(first, last, [](char c) { return c == '.' || c == 'e'; }) == last) {
-      *last++ = '.';
-      *last++ = '0';
-    }
-    n_ += static_cast<std::size_t>(last - first);
-  }
+
+  void null() { value("null", 4); }
+  void boolean(bool v) { v ? value("true", 4) : value("false", 5); }
   void integer(long v) {
+    element();
     room(24);
     char* first = &out_[n_];
     n_ += static_cast<std::size_t>(std::to_chars(first, first + 24, v).ptr - first);
   }
-  void boolean(bool v) { v ? raw("true") : raw("false"); }
+  // -1 (a mixed manifold's split of its DOF): null.
+  void integerOrNull(int v) { v >= 0 ? integer(v) : null(); }
+  // The shortest text that reads back as exactly v (std::to_chars), with ".0" when it would look
+  // like an integer: every reader then takes it as a double (simdjson does not refuse 21 digits
+  // as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat).
+  // Non-finite: null.
+  void number(double v) {
+    if (!std::isfinite(v)) return null();
+    element();
+    room(32);  // at most 24 characters ("-2.2250738585072014e-308"), and ".0"
+    char* const first = &out_[n_];
+    char* last;
+    if (format_.library_numbers) {
+      last = nlohmann::detail::to_chars(first, first + 32, v);  // appends ".0" itself
+    } else {
+      last = std::to_chars(first, first + 30, v).ptr;
+      if (std::find_if(first, last, [](char c) { return c == '.' || c == 'e'; }) == last) {
+        *last++ = '.';
+        *last++ = '0';
+      }
+    }
+    n_ += static_cast<std::size_t>(last - first);
+  }
   void string(const std::string& s) { string(s.data(), s.size()); }
   void string(const char* s) { string(s, std::char_traits<char>::length(s)); }
   void string(const char* s, std::size_t n) {
+    element();
     put('"');
     for (std::size_t i = 0; i < n; ++i) {
       const unsigned char c = static_cast<unsigned char>(s[i]);
       switch (c) {
         case '"':
-          raw("\\\"");
+          put("\\\"", 2);
           break;
         case '\\':
-          raw("\\\\");
+          put("\\\\", 2);
           break;
         case '\b':
-          raw("\\b");
+          put("\\b", 2);
           break;
         case '\f':
-          raw("\\f");
+          put("\\f", 2);
           break;
         case '\n':
-          raw("\\n");
+          put("\\n", 2);
           break;
         case '\r':
-          raw("\\r");
+          put("\\r", 2);
           break;
         case '\t':
-          raw("\\t");
+          put("\\t", 2);
           break;
         default:
           if (c < 0x20) {
@@ -120,16 +126,47 @@ class Writer {
     put('"');
   }
   template <typename F>
-  void list(int n, F&& each) {
-    put('[');
-    for (int i = 0; i < n; ++i) {
-      if (i) put(',');
-      each(i);
-    }
-    put(']');
+  void list(std::size_t n, F&& each) {
+    beginArray();
+    for (std::size_t i = 0; i < n; ++i) each(i);
+    endArray();
   }
 
  private:
+  // Before a value or a key: the comma after the previous element, and in the indented layout
+  // the line break and indentation (nlohmann's dump(2) layout).
+  void element() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (depth_ == 0) return;
+    if (!empty_[depth_]) put(',');
+    empty_[depth_] = false;
+    if (format_.indented) newline(depth_);
+  }
+  void value(const char* s, std::size_t k) {
+    element();
+    put(s, k);
+  }
+  void open(char c) {
+    element();
+    put(c);
+    ++depth_;
+    empty_[depth_] = true;
+  }
+  void close(char c) {
+    if (format_.indented && !empty_[depth_]) newline(depth_ - 1);
+    --depth_;
+    put(c);
+  }
+  void newline(int depth) {
+    const std::size_t k = 1 + 2 * static_cast<std::size_t>(depth);
+    room(k);
+    out_[n_] = '\n';
+    std::memset(&out_[n_ + 1], ' ', k - 1);
+    n_ += k;
+  }
   void room(std::size_t k) {
     if (n_ + k > out_.size()) out_.resize(2 * (n_ + k));
   }
@@ -144,7 +181,11 @@ class Writer {
   }
 
   std::string& out_;
+  ResultFormat format_;
   std::size_t n_ = 0;
+  int depth_ = 0;
+  bool after_key_ = false;
+  bool empty_[16] = {};  // per open container: nothing in it yet (the result nests 6 deep)
 };
 
 // The orientation as SPEC.md writes it: unit quaternion coefficients (x, y, z, w), w ≥ 0 (one of
@@ -155,150 +196,157 @@ Eigen::Vector4d orientationOf(const Isometry3d& X) {
   return q.w() < 0 ? Eigen::Vector4d(-q.coeffs()) : Eigen::Vector4d(q.coeffs());
 }
 
-// parameters, position, orientation, without the closing brace.
+// The one pose writer: parameters, position, orientation — inside an object the caller opened
+// (and closes, after any fields of its own such as "distance").
 void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof) {
-  w.raw("{");
   w.key("parameters");
-  w.list(dof, [&](int i) { w.number(theta[i]); });
+  w.list(static_cast<std::size_t>(dof), [&](std::size_t i) { w.number(theta[i]); });
   const Vector3d t = X.translation();
   w.key("position");
-  w.list(3, [&](int i) { w.number(t[i]); });
+  w.list(3, [&](std::size_t i) { w.number(t[static_cast<Eigen::Index>(i)]); });
   const Eigen::Vector4d q = orientationOf(X);
   w.key("orientation");
-  w.list(4, [&](int i) { w.number(q[i]); });
+  w.list(4, [&](std::size_t i) { w.number(q[static_cast<Eigen::Index>(i)]); });
 }
 
-// The message, with the user's constraint ids next to the indices (SPEC: ids are echoed).
-std::string resultMessage(const Problem& problem, const Solution& solution) {
-  std::string message = solution.message;
-  std::string ids;
-  for (int k : solution.conflicts) {
-    const std::string& id = problem.constraints[static_cast<std::size_t>(k)].id;
-    if (!id.empty()) ids += (ids.empty() ? "" : ", ") + std::to_string(k) + " = '" + id + "'";
-  }
-  if (!ids.empty()) message += " (constraints " + ids + ")";
-  return message;
+void writeNearest(Writer& w, const NearestPose& n, int dof) {
+  w.beginObject();
+  writePose(w, n.pose, n.parameters, dof);
+  w.key("distance");
+  w.number(n.distance);
+  w.endObject();
 }
 
-}  // namespace
-
-json poseToJson(const Isometry3d& X, const Params& theta, int dof) {
-  json j;
-  json ps = json::array();
-  for (int i = 0; i < dof; ++i) ps.push_back(num(theta[i]));
-  j["parameters"] = ps;
-  const Vector3d t = X.translation();
-  j["position"] = {t.x(), t.y(), t.z()};
-  const Eigen::Vector4d q = orientationOf(X);
-  j["orientation"] = {q[0], q[1], q[2], q[3]};
-  return j;
-}
-
-namespace {
-
-void writeLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
-               std::string& out) {
-  Writer w(out);  // overwrites `out` from its start (keeping its size saves zero-filling it)
-  w.raw("{");
-  w.key("relpos");
-  w.raw("1");
-  w.key("name");
-  w.string(problem.name);
-  w.key("status");
-  w.string(toString(solution.status));
-  w.key("message");
-  w.string(resultMessage(problem, solution));
-  w.key("branches");
-  int best = -1;
-  double best_d = std::numeric_limits<double>::infinity();
-  // Seeding the generator costs more than writing a branch: only when samples are asked for.
-  std::optional<std::mt19937_64> rng;
-  if (opt.samples > 0) rng.emplace(opt.seed);
-  w.list(static_cast<int>(solution.branches.size()), [&](int b) {
-    const Manifold& m = *solution.branches[static_cast<std::size_t>(b)].manifold;
-    const int dof = m.dof();
-    w.raw("{");
-    w.key("dof");
-    w.integer(dof);
-    w.key("rotational_dof");
-    m.rotationalDof() >= 0 ? w.integer(m.rotationalDof()) : w.raw("null");
-    w.key("translational_dof");
-    m.rotationalDof() >= 0 ? w.integer(m.translationalDof()) : w.raw("null");
-    w.key("manifold");
-    w.string(m.describe());
-    w.key("parameters");
-    w.list(dof, [&](int i) {
-      const Parameter p = m.parameter(i);
-      w.raw("{");
-      w.key("name");
-      w.string(p.name);
-      w.key("kind");
-      w.string(toString(p.kind));
-      w.key("min");
-      w.number(p.min);
-      w.key("max");
-      w.number(p.max);
-      w.key("periodic");
-      w.boolean(p.periodic);
-      w.raw("}");
-    });
-    const NearestPose n =
-        nearestOnBranch(solution.branches[static_cast<std::size_t>(b)], problem.mobile.pose);
-    w.key("nearest");
-    writePose(w, n.pose, n.parameters, dof);
-    w.key("distance");
-    w.number(n.distance);
-    w.raw("}");
-    if (n.distance < best_d) best_d = n.distance, best = b;
-    if (opt.samples > 0) {
-      w.key("samples");
-      w.list(opt.samples, [&](int) {
-        const Params t = sampleParameters(m, n.parameters, opt.window, *rng);
-        writePose(w, m.pose(t), t, dof);
-        w.raw("}");
-      });
-    }
-    w.raw("}");
+void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int dof) {
+  w.beginObject();
+  w.key("checked_against");
+  w.list(r.checked_against.size(), [&](std::size_t i) { w.string(r.checked_against[i]); });
+  w.key("clearance");
+  w.number(r.clearance);
+  w.key("nearest_collides");
+  w.boolean(c.nearest_collides);
+  w.key("nearest_contacts");
+  w.list(c.nearest_contacts.size(), [&](std::size_t i) {
+    w.beginObject();
+    w.key("object");
+    w.string(c.nearest_contacts[i].object);
+    w.key("depth");
+    w.number(c.nearest_contacts[i].depth);
+    w.endObject();
   });
-  w.key("best");
-  best >= 0 ? w.integer(best) : w.raw("null");
-  w.key("conflicts");
-  w.list(static_cast<int>(solution.conflicts.size()),
-         [&](int i) { w.integer(solution.conflicts[i]); });
-  w.key("redundant");
-  w.list(static_cast<int>(solution.redundant.size()),
-         [&](int i) { w.integer(solution.redundant[i]); });
-  w.key("rules");
-  w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.rules[i]); });
-  w.key("stats");
-  w.raw("{");
-  w.key("solve_us");
-  w.number(solution.solve_us);
-  w.raw("}}");
+  w.key("nearest_free");
+  if (c.has_nearest_free) {
+    writeNearest(w, c.nearest_free, dof);
+  } else {
+    w.null();
+    w.key("nearest_free_reason");
+    w.string(c.nearest_free_reason);
+  }
+  w.key("free_samples");
+  w.list(c.free_samples.size(), [&](std::size_t i) {
+    w.beginObject();
+    writePose(w, c.free_samples[i].pose, c.free_samples[i].parameters, dof);
+    w.endObject();
+  });
+  w.key("blocked_samples");
+  w.integer(c.blocked_samples);
+  w.endObject();
+}
+
+void writeBranch(Writer& w, const Report& r, std::size_t b) {
+  const BranchReport& br = r.branches[b];
+  w.beginObject();
+  w.key("dof");
+  w.integer(br.dof);
+  w.key("rotational_dof");
+  w.integerOrNull(br.rotational_dof);
+  w.key("translational_dof");
+  w.integerOrNull(br.rotational_dof >= 0 ? br.translational_dof : -1);
+  w.key("manifold");
+  w.string(br.manifold);
+  w.key("parameters");
+  w.list(static_cast<std::size_t>(br.dof), [&](std::size_t i) {
+    const Parameter& p = br.parameters[i];
+    w.beginObject();
+    w.key("name");
+    w.string(p.name);
+    w.key("kind");
+    w.string(toString(p.kind));
+    w.key("min");
+    w.number(p.min);
+    w.key("max");
+    w.number(p.max);
+    w.key("periodic");
+    w.boolean(p.periodic);
+    w.endObject();
+  });
+  w.key("nearest");
+  writeNearest(w, br.nearest, br.dof);
+  if (br.sample_count > 0) {
+    w.key("samples");
+    const SamplePose* samples = r.samplesOf(b);
+    w.list(br.sample_count, [&](std::size_t i) {
+      w.beginObject();
+      writePose(w, samples[i].pose, samples[i].parameters, br.dof);
+      w.endObject();
+    });
+  }
+  if (r.collision_checked && b < r.collision.size()) {
+    w.key("collision");
+    writeCollision(w, r, r.collision[b], br.dof);
+  }
+  w.endObject();
 }
 
 }  // namespace
 
-// Writing runs the branches' code (describe, the nearest-pose search, samples): a plugin's
-// manifold that throws there makes the line an `unhandled` one naming the plugin, not a lost line.
-void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& opt,
-                     std::string& out) {
-  std::string what;
-  try {
-    writeLine(problem, solution, opt, out);
-    return;
-  } catch (const std::exception& e) {
-    what = e.what();
-  } catch (...) {
-    what = "an exception that is not a std::exception";
+void writeReport(const Report& r, ResultFormat format, std::string& out) {
+  Writer w(out,
+           format);  // overwrites `out` from its start (keeping its size saves zero-filling it)
+  w.beginObject();
+  w.key("relpos");
+  w.integer(1);
+  w.key("name");
+  w.string(r.name);
+  w.key("status");
+  w.string(toString(r.status));
+  w.key("message");
+  w.string(r.message);
+  w.key("branches");
+  w.list(r.branches.size(), [&](std::size_t b) { writeBranch(w, r, b); });
+  w.key("best");
+  r.best >= 0 ? w.integer(r.best) : w.null();
+  w.key("conflicts");
+  w.list(r.conflicts.size(), [&](std::size_t i) { w.integer(r.conflicts[i]); });
+  w.key("redundant");
+  w.list(r.redundant.size(), [&](std::size_t i) { w.integer(r.redundant[i]); });
+  w.key("rules");
+  w.list(r.rules.size(), [&](std::size_t i) { w.string(r.rules[i]); });
+  w.key("stats");
+  w.beginObject();
+  w.key("solve_us");
+  w.number(r.solve_us);
+  w.endObject();
+  if (r.collision_checked) {
+    w.key("collision_free_branches");
+    w.integer(r.collision_free_branches);
   }
-  writeLine(problem, unhandledAfterThrow(solution, "writing the result", what), opt, out);
+  w.endObject();
 }
 
-json resultToJson(const Problem& problem, const Solution& solution, const ResultOptions& opt) {
-  std::string text;
-  writeResultLine(problem, solution, opt, text);
-  return json::parse(text);
+void writeStatusLine(const std::string& name, const char* status, const std::string& message,
+                     std::string& out) {
+  Writer w(out, kResultLine);
+  w.beginObject();
+  w.key("relpos");
+  w.integer(1);
+  w.key("name");
+  w.string(name);
+  w.key("status");
+  w.string(status);
+  w.key("message");
+  w.string(message);
+  w.endObject();
 }
 
 }  // namespace relpos

@@ -476,9 +476,9 @@ class Parser {
                       ")");
       ok = false;
     }
-    // Values.
-    const bool angle_type = c->type == "angle";
-    const double k = angle_type ? angleUnit() : 1.0;
+    // Values, in the unit of what the type's value measures.
+    const bool takes_value = type && (type->takes_value || type->value_kind != ValueKind::kNone);
+    const double k = type && type->value_kind == ValueKind::kAngle ? angleUnit() : 1.0;
     bool vals_ok = true;
     auto num = [&](int field, const char* key, double* v) {
       const Json& x = f[field];
@@ -497,13 +497,13 @@ class Parser {
       error(path, "give either \"value\" or \"min\"/\"max\", not both");
       vals_ok = false;
     }
-    if (type && type->takes_value && !c->has_value && !has_min && !has_max && vals_ok) {
+    if (takes_value && !c->has_value && !has_min && !has_max && vals_ok) {
       error(Path(path, "value"), "missing (a '" + c->type +
                                      "' constraint needs \"value\" or "
                                      "\"min\"/\"max\")");
       vals_ok = false;
     }
-    if (type && !type->takes_value) {
+    if (type && !takes_value) {
       const std::pair<int, const char*> values[] = {
           {kValue, "value"}, {kMin, "min"}, {kMax, "max"}};
       for (const auto& [field, key] : values)
@@ -516,7 +516,9 @@ class Parser {
       vals_ok = false;
     }
     const Json& o = f[kOrientation];
-    if (o.present()) {
+    if (o.present() && type && !type->takes_orientation) {
+      warn(Path(path, "orientation"), "ignored: '" + c->type + "' takes no orientation");
+    } else if (o.present()) {
       if (o == "aligned")
         c->orientation = Orientation::kAligned;
       else if (o == "opposed")
@@ -535,9 +537,8 @@ class Parser {
         vals_ok = false;
       } else {
         c->parallel = parallel.boolean();
-        if (!(c->type == "distance" && c->fixed.kind == FeatureKind::kLine &&
-              c->mobile.kind == FeatureKind::kLine))
-          warn(Path(path, "parallel"), "only meaningful for a line-line distance (ignored)");
+        if (!(type && readsParallel(*type, c->fixed.kind, c->mobile.kind)))
+          warn(Path(path, "parallel"), "only meaningful for a " + parallelUses() + " (ignored)");
       }
     }
     if (ok && vals_ok && type && type->check) {
@@ -554,6 +555,23 @@ class Parser {
       }
     }
     *ok_out = ok && vals_ok;
+  }
+
+  static bool readsParallel(const ConstraintType& t, FeatureKind fixed, FeatureKind mobile) {
+    return std::any_of(t.parallel_on.begin(), t.parallel_on.end(), [&](const FeaturePair& p) {
+      return p.fixed == fixed && p.mobile == mobile;
+    });
+  }
+
+  // Where "parallel" means something, from the registered types: "line-line distance" for the
+  // built-ins.
+  std::string parallelUses() const {
+    std::string uses;
+    for (const ConstraintType& t : reg_.constraintTypes())
+      for (const FeaturePair& p : t.parallel_on)
+        uses += (uses.empty() ? "" : " or ") + std::string(toString(p.fixed)) + "-" +
+                toString(p.mobile) + " " + t.name;
+    return uses.empty() ? "constraint type that reads it" : uses;
   }
 
   static std::string num2s(double v) {
@@ -660,7 +678,7 @@ class Parser {
 std::string readFile(const std::string& file, std::string* error) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) {
-    *error = "cannot read the file: it is a directory";
+    *error = "is a directory, not a spec file";
     return {};
   }
   std::ifstream in(file, std::ios::binary);
@@ -679,7 +697,7 @@ std::string readFile(const std::string& file, std::string* error) {
 
 }  // namespace
 
-ParseResult parseSpec(const std::string& text, const Registry& registry,
+ParseResult parseSpec(std::string_view text, const Registry& registry,
                       const std::string& default_name) {
   ParseResult out;
   out.name = detail::toValidUtf8(default_name);

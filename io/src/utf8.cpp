@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "relpos/io/text.hpp"
+
 namespace relpos::detail {
 
 std::string toValidUtf8(std::string_view s) {
@@ -86,3 +88,20 @@ std::string escapeForMessage(std::string_view s) {
 }
 
 }  // namespace relpos::detail
+
+namespace relpos {
+
+bool isValidUtf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const detail::Utf8Step step = detail::utf8Step(s.substr(i));
+    if (!step.valid) return false;
+    i += step.length;
+  }
+  return true;
+}
+
+std::string validUtf8(std::string_view s) { return detail::toValidUtf8(s); }
+
+std::string oneLine(std::string_view s) { return detail::escapeForMessage(s); }
+
+}  // namespace relpos

@@ -246,6 +246,8 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.description = "distance between point/line/plane features (PMF Table I)";
   t.accepts = pairs({{P, P}, {P, L}, {L, P}, {P, Pl}, {Pl, P}, {L, L}, {L, Pl}, {Pl, L}, {Pl, Pl}});
   t.takes_value = true;
+  t.value_kind = ValueKind::kLength;
+  t.parallel_on = pairs({{L, L}});
   t.check = &checkDistance;
   t.decompose = &decomposeDistance;
   t.violation = &distanceViolation;
@@ -256,6 +258,7 @@ void registerBuiltinConstraintTypes(Registry& r) {
   t.description = "angle between line directions and plane normals (PMF Table I)";
   t.accepts = pairs({{L, L}, {L, Pl}, {Pl, L}, {Pl, Pl}});
   t.takes_value = true;
+  t.value_kind = ValueKind::kAngle;
   t.check = &checkAngle;
   t.decompose = &decomposeAngle;
   t.violation = &angleViolation;

@@ -11,6 +11,9 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_run.hpp"
 #include "test_config.hpp"
@@ -103,12 +106,16 @@ TEST(Cli, UsageErrors) {
 
 // Help from any command, and the version, are answers (exit 0 on stdout), not usage errors.
 TEST(Cli, HelpAndVersion) {
-  for (const char* args : {"--help", "-h", "solve --help", "batch -h", "table --help"}) {
+  for (const char* args : {"--help", "-h", "help"}) {
     const CmdResult r = run(args);
     EXPECT_EQ(r.code, 0) << args << ": " << r.err;
     EXPECT_NE(r.out.find("relpos solve SPEC.json"), std::string::npos) << args;
+    EXPECT_NE(r.out.find("relpos help COMMAND"), std::string::npos) << args;
     EXPECT_EQ(r.err, "") << args;
   }
+  const CmdResult unknown = run("help frobnicate");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("usage:"), std::string::npos) << unknown.err;
   const CmdResult v = run("--version");
   EXPECT_EQ(v.code, 0) << v.err;
   // "relpos MAJOR.MINOR.PATCH (plugin ABI N)"
@@ -116,6 +123,42 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_NE(v.out.find("(plugin ABI "), std::string::npos) << v.out;
   EXPECT_EQ(std::count(v.out.begin(), v.out.end(), '\n'), 1) << v.out;
   EXPECT_GE(std::count(v.out.begin(), v.out.end(), '.'), 2) << v.out;
+}
+
+// `relpos help CMD` and `relpos CMD --help` are the same answer: that command's synopsis and a
+// line for each of its options (and the common ones), exit 0, nothing on stderr.
+TEST(Cli, EachCommandDescribesEachOfItsOptions) {
+  const std::pair<const char*, std::vector<const char*>> commands[] = {
+      {"solve",
+       {"--samples N", "--window W", "--seed S", "-o OUT.json", "--collision", "--clearance C",
+        "--collision-samples N"}},
+      {"batch", {"--jobs N", "-o OUT.jsonl", "--samples N", "--collision"}},
+      {"table", {"--repeat N", "--collision"}},
+      {"rules", {"--coverage"}},
+  };
+  for (const auto& [name, options] : commands) {
+    const std::string cmd = name;
+    const CmdResult help = run("help " + cmd);
+    const CmdResult flag = run(cmd + " --help");
+    EXPECT_EQ(help.code, 0) << cmd << ": " << help.err;
+    EXPECT_EQ(flag.code, 0) << cmd << ": " << flag.err;
+    EXPECT_EQ(help.out, flag.out) << cmd;
+    EXPECT_EQ(help.err, "") << cmd;
+    EXPECT_EQ(help.out.rfind("usage: relpos " + cmd, 0), 0u) << help.out;
+    for (const std::string option : options) {
+      // The option starts a line of the options list, followed by its description.
+      const std::size_t at = help.out.find("\n  " + option + " ");
+      ASSERT_NE(at, std::string::npos) << cmd << " lacks " << option << ":\n" << help.out;
+      const std::size_t end = help.out.find('\n', at + 1);
+      EXPECT_GT(end - at, option.size() + 12) << cmd << " " << option << ": no description";
+    }
+    for (const char* common : {"--plugin LIB.so", "--allow-override"})
+      EXPECT_NE(help.out.find(common), std::string::npos) << cmd;
+    for (std::size_t at = 0, end; at < help.out.size(); at = end + 1) {
+      end = std::min(help.out.find('\n', at), help.out.size());
+      EXPECT_LE(end - at, 100u) << cmd << ": a line longer than 100 columns";
+    }
+  }
 }
 
 TEST(Cli, RulesListsTypesRulesAndManifolds) {

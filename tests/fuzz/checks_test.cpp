@@ -37,7 +37,7 @@ Written workedExample() {
   EXPECT_TRUE(r.problem);
   Written w{*r.problem, ""};
   const Solution s = solve(w.problem, builtinRegistry());
-  ResultOptions o;
+  ReportOptions o;
   o.samples = 3;
   writeResultLine(w.problem, s, o, w.line);
   return w;

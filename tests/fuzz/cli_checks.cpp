@@ -15,7 +15,7 @@
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 
 namespace relpos::fuzz {
 namespace {
@@ -443,7 +443,7 @@ double checkInProcess(const Mutant& spec, int samples, std::uint64_t seed, Tally
   const ParseResult parsed = parseSpec(spec.text, builtinRegistry(), "in-process");
   if (parsed.problem) {
     solve(*parsed.problem, builtinRegistry(), SolverOptions(), ws, sol);
-    ResultOptions options;
+    ReportOptions options;
     options.samples = samples;
     options.seed = seed;
     writeResultLine(*parsed.problem, sol, options, line);

@@ -12,7 +12,7 @@
 
 #include "relpos/core/problem.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 
 namespace relpos::fuzz {
 

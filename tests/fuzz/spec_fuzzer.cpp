@@ -14,7 +14,7 @@
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 #include "result_checks.hpp"
 
 namespace {
@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (parsed.problem) {
     const Problem& problem = *parsed.problem;
     solve(problem, registry, SolverOptions(), workspace, solution);
-    ResultOptions options;
+    ReportOptions options;
     options.samples = kSamples;
     options.seed = kSeed;
     writeResultLine(problem, solution, options, line);

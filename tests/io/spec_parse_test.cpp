@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 
@@ -71,6 +72,95 @@ TEST(SpecParse, DegreesApplyToAnglesAndRpy) {
   EXPECT_NEAR(r.problem->constraints[0].value, 1.5707963267948966, 1e-15);
   Vector3d x = r.problem->mobile.pose.linear() * Vector3d::UnitX();
   EXPECT_TRUE(x.isApprox(Vector3d::UnitY(), 1e-12)) << x.transpose();
+}
+
+// A plugin-style registry: the built-ins and types registered in-process the way a plugin
+// registers them, one of each value kind; the reader knows none of them by name.
+const Registry& pluginStyleRegistry() {
+  static const Registry* const reg = [] {
+    auto* r = new Registry;  // lives as long as the test program
+    registerBuiltins(*r);
+    const FeaturePair line_line{FeatureKind::kLine, FeatureKind::kLine};
+    ConstraintType twist;
+    twist.name = "twist";
+    twist.description = "an angle-valued plugin type";
+    twist.accepts = {line_line};
+    twist.value_kind = ValueKind::kAngle;  // takes_value left false: the kind implies it
+    twist.origin = "test";
+    r->addConstraintType(twist);
+    ConstraintType gap = twist;
+    gap.name = "gap";
+    gap.value_kind = ValueKind::kLength;
+    gap.parallel_on = {line_line};
+    gap.takes_orientation = false;
+    r->addConstraintType(gap);
+    r->freeze();
+    return r;
+  }();
+  return *reg;
+}
+
+ParseResult parsePluginStyle(std::string constraints, bool degrees) {
+  std::string s = spec(constraints);
+  if (degrees) s.insert(s.find("\"fixed\""), R"("units": {"angle": "deg"}, )");
+  return parseSpec(s, pluginStyleRegistry(), "t");
+}
+
+bool warnedAt(const ParseResult& r, const std::string& path, const std::string& needle) {
+  for (const auto& w : r.warnings)
+    if (w.path == path && w.message.find(needle) != std::string::npos) return true;
+  return false;
+}
+
+// The unit conversion follows the type's value kind: a plugin's angle-valued type gets deg → rad
+// (it used to be read as given, in degrees), a length-valued one is read as given.
+TEST(SpecParse, APluginAngleTypeIsReadInTheSpecsAngleUnit) {
+  ParseResult r =
+      parsePluginStyle(R"({"type": "twist", "fixed": "K", "mobile": "ax", "value": 90})", true);
+  ASSERT_TRUE(r.problem) << r.errors.front().path << r.errors.front().message;
+  EXPECT_NEAR(r.problem->constraints[0].value, 1.5707963267948966, 1e-15);
+  r = parsePluginStyle(R"({"type": "twist", "fixed": "K", "mobile": "ax", "min": 10, "max": 30})",
+                       true);
+  ASSERT_TRUE(r.problem);
+  EXPECT_NEAR(r.problem->constraints[0].min, 10 * kPi / 180, 1e-15);
+  EXPECT_NEAR(r.problem->constraints[0].max, 30 * kPi / 180, 1e-15);
+  r = parsePluginStyle(R"({"type": "gap", "fixed": "K", "mobile": "ax", "value": 90})", true);
+  ASSERT_TRUE(r.problem);
+  EXPECT_EQ(r.problem->constraints[0].value, 90.0);
+  // A value kind means a value is needed.
+  r = parsePluginStyle(R"({"type": "twist", "fixed": "K", "mobile": "ax"})", false);
+  EXPECT_FALSE(r.problem);
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_EQ(r.errors.front().path, "constraints[0].value");
+}
+
+// "parallel" and "orientation" are read where the type says so and warned about elsewhere; the
+// warning names where "parallel" does mean something, from the registered types.
+TEST(SpecParse, OptionalFieldsFollowTheType) {
+  ParseResult r = parsePluginStyle(
+      R"({"type": "gap", "fixed": "K", "mobile": "ax", "value": 1, "parallel": true})", false);
+  ASSERT_TRUE(r.problem);
+  EXPECT_TRUE(r.problem->constraints[0].parallel);
+  EXPECT_FALSE(warnedAt(r, "constraints[0].parallel", "")) << r.warnings.size();
+  r = parsePluginStyle(
+      R"({"type": "twist", "fixed": "K", "mobile": "ax", "value": 1, "parallel": true})", false);
+  ASSERT_TRUE(r.problem);
+  EXPECT_TRUE(warnedAt(r, "constraints[0].parallel",
+                       "only meaningful for a line-line distance or line-line gap (ignored)"));
+  r = parsePluginStyle(
+      R"({"type": "gap", "fixed": "K", "mobile": "ax", "value": 1, "orientation": "opposed"})",
+      false);
+  ASSERT_TRUE(r.problem);
+  EXPECT_TRUE(warnedAt(r, "constraints[0].orientation", "'gap' takes no orientation"));
+  EXPECT_EQ(r.problem->constraints[0].orientation, InputConstraint().orientation);
+  // The built-in registry: parallel only on a line-line distance.
+  r = parse(spec(R"({"type": "angle", "fixed": "K", "mobile": "ax", "value": 1, "parallel": 1})"));
+  EXPECT_FALSE(r.problem);
+  r = parse(
+      spec(R"({"type": "angle", "fixed": "K", "mobile": "ax", "value": 1, "parallel": false})"));
+  ASSERT_TRUE(r.problem);
+  EXPECT_TRUE(
+      warnedAt(r, "constraints[0].parallel", "only meaningful for a line-line distance (ignored)"));
 }
 
 TEST(SpecParse, PoseForms) {

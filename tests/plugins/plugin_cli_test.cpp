@@ -216,4 +216,39 @@ TEST(PluginCli, AManifoldThatThrowsWhileFilteringCollisions) {
       << j["message"];
 }
 
+// The same guard holds in table and batch (it lives in relpos::evaluate, which every command
+// calls): table counts no free branch and goes on, batch writes the spec's line as unhandled
+// "while filtering collisions" (not "internal error") and the next spec is still solved.
+TEST(PluginCli, AManifoldThatThrowsWhileFilteringCollisionsInTableAndBatch) {
+  json spec = json::parse(onePairSpec("bad-manifold", manifold_throws::kPoseThrowsAwayFromZero));
+  const std::string meshes = RELPOS_DATA_DIR "/collision/meshes/";
+  spec["fixed"]["mesh"] = meshes + "table.off";
+  spec["mobile"]["mesh"] = meshes + "part.off";
+  const std::string plugin = " --plugin " + badPlugin("manifold-throws");
+  const std::string thrown = canonicalBad("manifold-throws") +
+                             " threw while filtering collisions: pose away from zero blew up";
+
+  const fs::path file = writeFile("collide-table.json", spec.dump());
+  const CmdResult t = run("table " + file.string() + " --repeat 1 --collision" + plugin);
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NE(t.out.find("bad-manifold"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find(" 0 invalid"), std::string::npos) << t.out;
+
+  json good = json::parse(slurp(kExample));
+  good["fixed"]["mesh"] = meshes + "table.off";
+  good["mobile"]["mesh"] = meshes + "part.off";
+  const fs::path in = writeFile("collide.jsonl", spec.dump() + "\n" + good.dump() + "\n");
+  const CmdResult b = run("batch " + in.string() + " --collision" + plugin);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const auto out = lines(b.out);
+  ASSERT_EQ(out.size(), 2u) << b.out;
+  EXPECT_EQ(out[0]["status"], "unhandled");
+  EXPECT_TRUE(out[0]["branches"].empty());
+  EXPECT_EQ(out[0]["collision_free_branches"], 0);
+  EXPECT_NE(out[0]["message"].get<std::string>().find(thrown), std::string::npos)
+      << out[0]["message"];
+  EXPECT_EQ(out[1]["status"], "solved") << out[1];
+  EXPECT_TRUE(out[1].contains("collision_free_branches")) << out[1];
+}
+
 }  // namespace

@@ -11,8 +11,8 @@
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/io/result_writer.hpp"
 #include "relpos/plugins/loader.hpp"
+#include "relpos/report/evaluate.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
@@ -159,7 +159,7 @@ TEST(PluginGuards, AManifoldThatThrowsWhileTheResultIsWritten) {
       continue;
     }
     ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    ResultOptions options;
+    ReportOptions options;
     options.samples = 3;
     std::string line;
     ASSERT_NO_THROW(writeResultLine(p, s, options, line));
@@ -168,7 +168,9 @@ TEST(PluginGuards, AManifoldThatThrowsWhileTheResultIsWritten) {
     EXPECT_EQ(j["branches"].size(), 0u);
     EXPECT_TRUE(j["best"].is_null());
     EXPECT_EQ(j["message"], prefix + c.thrown);
-    ASSERT_NO_THROW(resultToJson(p, s, options));
+    Report report;
+    ASSERT_NO_THROW(evaluate(p, s, options, report));
+    EXPECT_EQ(report.status, Status::kUnhandled);
   }
 }
 

@@ -11,7 +11,7 @@
 #include "evaluator.hpp"
 #include "problem_transforms.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/io/result_writer.hpp"
+#include "relpos/report/evaluate.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
@@ -218,7 +218,7 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
   // The result line as written (with two samples per branch): every number finite. Its nearest
   // poses are the ones checked below (nearestOnBranch is the costliest part of a check: it is
   // not run twice for the same pose).
-  ResultOptions ro;
+  ReportOptions ro;
   ro.samples = 2;
   ro.window = size;
   ro.seed = opt.seed;

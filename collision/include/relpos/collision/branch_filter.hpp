@@ -1,13 +1,13 @@
 #pragma once
 // Collision filtering of one solution branch (SPEC.md §2 "Collision fields"): the verdict for its
 // nearest pose, the collision-free pose nearest the initial pose, and which parameter samples are
-// free.
-#include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
+// free. Data only: the writer (relpos/io/result_writer.hpp) writes it as the branch's "collision"
+// object.
+#include <cstdint>
 
 #include "relpos/collision/scene.hpp"
 #include "relpos/core/solver.hpp"
+#include "relpos/io/report.hpp"
 
 namespace relpos::collision {
 
@@ -18,20 +18,8 @@ struct FilterOptions {
   std::uint64_t seed = 0;  // the samples' generator (deterministic)
 };
 
-struct FreePose {
-  Params parameters{};
-  Isometry3d pose = Isometry3d::Identity();
-};
-
-struct BranchCollision {
-  bool nearest_collides = false;
-  std::vector<Contact> nearest_contacts;
-  bool has_nearest_free = false;
-  NearestPose nearest_free;
-  std::string nearest_free_reason;
-  std::vector<FreePose> free_samples;
-  int blocked_samples = 0;
-};
+using FreePose = SamplePose;
+using BranchCollision = CollisionReport;
 
 // `nearest` is the branch's nearest pose to `initial` (nearestOnBranch). nearest_free: the
 // nearest pose if free; otherwise the closest free sample (or, with none free, the closest free
@@ -40,10 +28,5 @@ struct BranchCollision {
 // search that only steps to free poses.
 BranchCollision filterBranch(const Scene& scene, const Branch& branch, const NearestPose& nearest,
                              const Isometry3d& initial, const FilterOptions& options);
-
-// The branch's "collision" object of SPEC.md §2.
-nlohmann::ordered_json collisionToJson(const BranchCollision& c, int dof,
-                                       const std::vector<std::string>& checked_against,
-                                       double clearance);
 
 }  // namespace relpos::collision

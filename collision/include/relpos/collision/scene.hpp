@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "relpos/collision/mesh.hpp"
-#include "relpos/core/problem.hpp"
 #include "relpos/core/diagnostic.hpp"
+#include "relpos/core/problem.hpp"
+#include "relpos/io/report.hpp"
 
 namespace relpos::collision {
 
@@ -37,10 +38,7 @@ class MeshCache {
   std::map<std::string, Entry> entries_;
 };
 
-struct Contact {
-  std::string object;
-  double depth;  // penetration depth; negative: the missing distance to the clearance
-};
+using Contact = relpos::Contact;  // relpos/io/report.hpp: a result value
 
 struct SceneObject {
   std::string name;

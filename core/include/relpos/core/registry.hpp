@@ -49,11 +49,25 @@ struct FeaturePair {
   FeatureKind fixed, mobile;
 };
 
+// What a constraint type's "value" / "min" / "max" measure: the spec reader converts an angle
+// from the spec's angle unit (deg → rad) and reads a length as given.
+enum class ValueKind : unsigned char { kNone, kLength, kAngle };
+
+// A constraint type declares everything the spec reader needs to read its constraints: the
+// reader knows no type by name.
 struct ConstraintType {
   std::string name;
   std::string description;
   std::vector<FeaturePair> accepts;
-  bool takes_value = false;  // distance/angle need "value" or "min"/"max"
+  // Needs "value" or "min"/"max" (implied by a value_kind other than kNone; without one, a plugin's
+  // value is a plain number, read as given). A type without a value warns that one is ignored.
+  bool takes_value = false;
+  ValueKind value_kind = ValueKind::kNone;
+  // The optional fields it reads: "orientation" (aligned / opposed / either), and the "parallel"
+  // flag on these fixed-mobile feature pairs (distance: line-line). The reader warns that a field
+  // a type does not read is ignored.
+  bool takes_orientation = true;
+  std::vector<FeaturePair> parallel_on;
   CheckFn check = nullptr;
   DecomposeFn decompose = nullptr;
   ViolationFn violation = nullptr;

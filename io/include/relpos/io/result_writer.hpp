@@ -1,30 +1,36 @@
 #pragma once
-// Writing results (SPEC.md §2).
-#include <cstdint>
-#include <nlohmann/json_fwd.hpp>
+// Writing results (SPEC.md §2): a Report (relpos/io/report.hpp, computed by relpos::evaluate in
+// report/) as JSON text. The one writer of every result field: a new field is written here only.
+// Never throws on a Report's contents: strings are escaped as JSON needs and always valid UTF-8
+// (ill-formed bytes become U+FFFD), non-finite numbers are null.
 #include <string>
 
-#include "relpos/core/problem.hpp"
-#include "relpos/core/solution.hpp"
+#include "relpos/io/report.hpp"
 
 namespace relpos {
 
-struct ResultOptions {
-  int samples = 0;      // poses per branch (--samples)
-  double window = 1.0;  // half-width for unbounded length parameters (--window)
-  std::uint64_t seed = 0;
+struct ResultFormat {
+  // One line (relpos batch), or indented by two spaces (relpos solve's document).
+  bool indented = false;
+  // How numbers are spelled; both read back as exactly the same double.
+  //   false: the shortest text (std::to_chars), with ".0" on integral values — the batch line.
+  //   true:  as the nlohmann JSON library prints them (fixed notation for decimal exponents in
+  //          (-5, 15], Grisu2 digits) — the documents relpos printed through that library before
+  //          it had its own writer (solve's, and batch lines with collision fields), kept
+  //          byte-identical.
+  bool library_numbers = false;
 };
+inline constexpr ResultFormat kResultLine{false, false};
+inline constexpr ResultFormat kCollisionLine{false, true};
+inline constexpr ResultFormat kResultDocument{true, true};
 
-// A pose as SPEC.md §2 writes it: parameters, position, orientation (x, y, z, w with w ≥ 0).
-nlohmann::ordered_json poseToJson(const Isometry3d& X, const Params& theta, int dof);
+// The result document of `report` into `out`, replacing its contents (`out` is reused: a batch
+// keeps one per thread, and after the first lines writing allocates nothing).
+void writeReport(const Report& report, ResultFormat format, std::string& out);
 
-// The result document of SPEC.md §2 (nearest pose per branch, best, samples, etc.) as one line
-// of compact JSON, into `out` (reused: a batch keeps one per thread).
-void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& options,
+// A result without branches, {"relpos":1,"name":…,"status":…,"message":…}: a batch's invalid
+// line, or one whose spec threw.
+void writeStatusLine(const std::string& name, const char* status, const std::string& message,
                      std::string& out);
-
-// The same document as a JSON tree (to add fields to, or to print indented).
-nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
-                                    const ResultOptions& options);
 
 }  // namespace relpos

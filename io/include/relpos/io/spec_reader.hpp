@@ -24,7 +24,7 @@ struct ParseResult {
 
 // `default_name` is used when the spec has no "name" (the file name without extension); bytes of
 // it that are not UTF-8 become U+FFFD.
-ParseResult parseSpec(const std::string& text, const Registry& registry,
+ParseResult parseSpec(std::string_view text, const Registry& registry,
                       const std::string& default_name = "spec");
 ParseResult parseSpecFile(const std::string& file, const Registry& registry);
 

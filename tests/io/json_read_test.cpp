@@ -403,7 +403,7 @@ TEST(SpecReader, TheNameIsKnownAlsoWhenTheSpecIsInvalid) {
 TEST(SpecReader, ADirectoryIsNotASpec) {
   const ParseResult r = parseSpecFile(::testing::TempDir(), builtinRegistry());
   ASSERT_EQ(r.errors.size(), 1u);
-  EXPECT_EQ(r.errors[0].message, "cannot read the file: it is a directory");
+  EXPECT_EQ(r.errors[0].message, "is a directory, not a spec file");
   EXPECT_TRUE(specPluginPaths(::testing::TempDir()).empty());
 }
 

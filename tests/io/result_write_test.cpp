@@ -1,5 +1,6 @@
 // The result line (writeResultLine) is the JSON document SPEC.md §2 describes: valid JSON in
-// valid UTF-8 whatever the names hold, the document resultToJson gives, and every number in it
+// valid UTF-8 whatever the names hold, the same document as the indented one `relpos solve` prints
+// (both written from one Report), and every number in it
 // reads back as exactly the double it was written from, in the fewest digits that do so.
 #include <gtest/gtest.h>
 
@@ -18,8 +19,9 @@
 
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/report/evaluate.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
@@ -47,6 +49,13 @@ std::vector<Problem> readBundledProblems() {
 const std::vector<Problem>& bundledProblems() {
   static const std::vector<Problem> problems = readBundledProblems();
   return problems;
+}
+
+// The indented document of the same Report, read back.
+json documentTree(const Problem& p, const Solution& s, const ReportOptions& opt) {
+  std::string text;
+  writeReport(evaluate(p, s, opt), kResultDocument, text);
+  return json::parse(text);
 }
 
 bool sameDouble(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -86,12 +95,12 @@ void expectPose(const json& j, const Isometry3d& X, const Params& theta, int dof
 // Every number of the line against the double it comes from, recomputed here: the parameter
 // bounds, the nearest pose and its distance, the samples (the same generator, drawn in the same
 // order), the solve time.
-void expectLine(const Problem& p, const ResultOptions& opt) {
+void expectLine(const Problem& p, const ReportOptions& opt) {
   const Solution s = solve(p, builtinRegistry());
   std::string line;
   writeResultLine(p, s, opt, line);
   const json doc = json::parse(line);  // throws on malformed JSON or UTF-8
-  EXPECT_EQ(doc, resultToJson(p, s, opt)) << p.name;
+  EXPECT_EQ(doc, documentTree(p, s, opt)) << p.name;
   EXPECT_EQ(doc["name"], p.name);
   expectNumber(doc["stats"]["solve_us"], s.solve_us, p.name + " solve_us");
   ASSERT_EQ(doc["branches"].size(), s.branches.size()) << p.name;
@@ -123,11 +132,11 @@ void expectLine(const Problem& p, const ResultOptions& opt) {
 TEST(ResultLine, EveryNumberReadsBackAsWrittenForEveryBundledSpec) {
   const auto problems = bundledProblems();
   ASSERT_GT(problems.size(), 150u);
-  ResultOptions with_samples;
+  ReportOptions with_samples;
   with_samples.samples = 3;
   with_samples.seed = 5;
   for (const Problem& p : problems) {
-    expectLine(p, ResultOptions());
+    expectLine(p, ReportOptions());
     expectLine(p, with_samples);
   }
 }
@@ -138,7 +147,7 @@ std::string numberText(double v) {
   Solution s;
   s.solve_us = v;
   std::string line;
-  writeResultLine(bundledProblems().front(), s, ResultOptions(), line);
+  writeResultLine(bundledProblems().front(), s, ReportOptions(), line);
   const std::string key = "\"solve_us\":";
   const std::size_t at = line.rfind(key) + key.size();
   return line.substr(at, line.rfind("}}") - at);
@@ -215,17 +224,17 @@ TEST(ResultLine, NamesAreEscapedAsJsonNeeds) {
     p.name = name;
     const Solution s = solve(p, builtinRegistry());
     std::string line;
-    writeResultLine(p, s, ResultOptions(), line);
+    writeResultLine(p, s, ReportOptions(), line);
     for (char c : line) EXPECT_GE(static_cast<unsigned char>(c), 0x20) << "raw control in " << line;
     const json doc = json::parse(line);
     EXPECT_EQ(doc["name"], name);
-    EXPECT_EQ(doc, resultToJson(p, s, ResultOptions()));
+    EXPECT_EQ(doc, documentTree(p, s, ReportOptions()));
   }
 }
 
 // A name that is not UTF-8 (a default name from a file name, or one set through the API): each
 // ill-formed part becomes one U+FFFD, as Unicode recommends ("maximal subparts", Unicode 15
-// §3.9, table 3-8), so the line stays valid UTF-8 and resultToJson can parse it.
+// §3.9, table 3-8), so the line stays valid UTF-8 and a JSON library can parse it.
 TEST(ResultLine, BytesThatAreNotUtf8BecomeReplacementCharacters) {
   const std::string r = "\xef\xbf\xbd";  // U+FFFD
   const std::pair<std::string, std::string> cases[] = {
@@ -244,12 +253,12 @@ TEST(ResultLine, BytesThatAreNotUtf8BecomeReplacementCharacters) {
   for (const auto& [name, expected] : cases) {
     p.name = name;
     std::string line;
-    writeResultLine(p, s, ResultOptions(), line);
+    writeResultLine(p, s, ReportOptions(), line);
     json doc;
     ASSERT_NO_THROW(doc = json::parse(line)) << line;
     EXPECT_EQ(doc["name"], expected);
     json tree;
-    ASSERT_NO_THROW(tree = resultToJson(p, s, ResultOptions()));
+    ASSERT_NO_THROW(tree = documentTree(p, s, ReportOptions()));
     EXPECT_EQ(tree["name"], expected);
     EXPECT_NO_THROW((void)tree.dump());
   }

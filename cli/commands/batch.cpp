@@ -22,7 +22,9 @@
 #include "file_text.hpp"
 #include "output_file.hpp"
 #include "relpos/core/solver.hpp"
-#include "safe_text.hpp"
+#include "relpos/io/result_writer.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/text.hpp"
 
 namespace relpos::cli {
 namespace {
@@ -90,20 +92,6 @@ void collectItems(const std::string& path, Input* input) {
   }
 }
 
-// A result line without branches: {"relpos":1,"name":…,"status":…,"message":…}. Written by hand,
-// not through a JSON library, so that nothing in the name or message (a cut UTF-8 sequence
-// quoted from a malformed line, a control character) can make writing it fail.
-std::string statusLine(const std::string& name, const char* status, const std::string& message) {
-  std::string line = "{\"relpos\":1,\"name\":";
-  appendJsonString(line, name);
-  line += ",\"status\":\"";
-  line += status;
-  line += "\",\"message\":";
-  appendJsonString(line, message);
-  line += '}';
-  return line;
-}
-
 // "SOURCE: json.path: what" for every problem, joined by "; ".
 std::string joined(const std::string& source, const std::vector<Diagnostic>& problems) {
   std::string message;
@@ -121,8 +109,9 @@ const std::string& specName(const ParseResult& parsed) { return parsed.name; }
 struct WorkerState {
   Workspace ws;
   Solution sol;
-  std::string text, line;  // the spec's text, its result line
-  std::string name;        // the spec's name once it is known (for a line about a failure)
+  Report report;
+  std::string line;  // its result line
+  std::string name;  // the spec's name once it is known (for a line about a failure)
 };
 
 // Parses and solves one spec: its result line into state.line (every problem of an invalid spec
@@ -137,13 +126,12 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
   if (!item.file.empty()) {
     parsed = parseSpecFile(item.file, reg);
   } else {
-    state.text.assign(item.text);
-    parsed = parseSpec(state.text, reg, input.defaultName(item));
+    parsed = parseSpec(item.text, reg, input.defaultName(item));
   }
   if (!parsed.problem) {
     out.name = specName(parsed);
     out.status = "invalid";
-    state.line = statusLine(out.name, "invalid", joined(input.source(item), parsed.errors));
+    writeStatusLine(out.name, "invalid", joined(input.source(item), parsed.errors), state.line);
   } else {
     const Problem& pb = *parsed.problem;
     state.name = pb.name;
@@ -151,14 +139,17 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
     out.name = pb.name;
     out.status = toString(sol.status);
     if (!a.collision) {
-      writeResultLine(pb, sol, a.result, state.line);  // no JSON tree: the common, fast case
+      evaluate(pb, sol, a.result, state.report);
+      writeReport(state.report, kResultLine, state.line);
     } else {
-      nlohmann::ordered_json result = resultTree(pb, sol, a.result);
       std::vector<Diagnostic> errors, warnings;
-      if (collisionFields(input.meshDir(item), a, pb, sol, cache, &result, &errors, &warnings)) {
-        state.line = result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+      if (const auto scene =
+              collision::buildScene(pb, input.meshDir(item), cache, &errors, &warnings)) {
+        evaluate(pb, sol, a.result, state.report, scene.get());
+        writeReport(state.report, kCollisionLine, state.line);
+        out.status = toString(state.report.status);
       } else {
-        state.line = statusLine(pb.name, "invalid", joined(input.source(item), errors));
+        writeStatusLine(pb.name, "invalid", joined(input.source(item), errors), state.line);
         out.status = "invalid";
       }
     }
@@ -188,7 +179,7 @@ Outcome runGuarded(const Input& input, const Item& item, const Args& a, const Re
   out.status = "unhandled";
   // The solver's buffers may be half-way through a solve: the next spec starts from fresh ones.
   state = std::make_unique<WorkerState>();
-  state->line = statusLine(out.name, "unhandled", "internal error: " + what);
+  writeStatusLine(out.name, "unhandled", "internal error: " + what, state->line);
   return out;
 }
 

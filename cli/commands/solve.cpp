@@ -1,0 +1,53 @@
+// relpos solve (SPEC.md §3): one spec, its result document indented.
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli.hpp"
+#include "output_file.hpp"
+#include "relpos/core/solver.hpp"
+#include "relpos/io/result_writer.hpp"
+
+namespace relpos::cli {
+
+int cmdSolve(const Args& a, const Registry& reg) {
+  if (a.positional.size() != 1) throw UsageError("solve takes exactly one spec file");
+  if (a.collision_option && !a.collision)
+    throw UsageError("--clearance and --collision-samples need --collision");
+  // Before solving: an -o that cannot be written is known now, not after the work.
+  if (!a.out.empty()) checkOutput(a.out, a.positional, OutputMode::kReplace);
+  relpos::Problem pb;
+  if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
+  relpos::Workspace ws;
+  relpos::Solution sol;
+  relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
+  relpos::Report report;
+  if (a.collision) {
+    relpos::collision::MeshCache cache;
+    std::unique_ptr<relpos::collision::Scene> scene;
+    try {
+      scene = loadScene(a.positional[0], pb, cache);
+    } catch (const std::exception& e) {
+      // Reading the meshes threw: an answer, as when the filter throws (evaluate).
+      relpos::evaluate(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
+                       a.result, report);
+      report.collision_checked = true;
+    }
+    if (!scene && !report.collision_checked) return kExitInvalid;
+    if (scene) relpos::evaluate(pb, sol, a.result, report, scene.get());
+  } else {
+    relpos::evaluate(pb, sol, a.result, report);
+  }
+  std::string text;
+  relpos::writeReport(report, relpos::kResultDocument, text);
+  text += '\n';
+  if (!a.out.empty()) {
+    replaceFile(a.out, text);
+    return kExitOk;
+  }
+  std::cout << text << std::flush;
+  if (!std::cout) throw WriteFailed("standard output: cannot write the result");
+  return kExitOk;
+}
+
+}  // namespace relpos::cli

@@ -1,0 +1,156 @@
+#include "help.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace relpos::cli {
+namespace {
+
+// Options several commands share, spelled once.
+constexpr Option kSamples{"--samples N",
+                          "also write N poses per branch, drawn uniformly within its parameter "
+                          "bounds (\"samples\"; default 0)"};
+constexpr Option kWindow{"--window W",
+                         "unbounded length parameters are sampled within +-W of the nearest "
+                         "pose's (default 1)"};
+constexpr Option kSeed{"--seed S", "the seed of the samples' generator (default 0)"};
+constexpr Option kCollision{"--collision",
+                            "filter each branch against the meshes (mobile.mesh, fixed.mesh, "
+                            "obstacles): adds \"collision\" per branch and "
+                            "\"collision_free_branches\""};
+constexpr Option kClearance{"--clearance C",
+                            "with --collision: closer than C to an object counts as a collision "
+                            "(default 0)"};
+constexpr Option kCollisionSamples{"--collision-samples N",
+                                   "with --collision: poses per branch the filter tests "
+                                   "(default 64)"};
+
+int cmdNone(const Args&, const Registry&) { return kExitOk; }
+
+const Command kCommands[] = {
+    {"solve",
+     "solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
+     "               [--collision [--clearance C] [--collision-samples N]]",
+     "Solves one spec and prints its result document (docs/spec.md, \"The result\"), indented.",
+     {kSamples,
+      kWindow,
+      kSeed,
+      {"-o OUT.json", "write the result to OUT.json (replaced whole, only once it is complete)"},
+      kCollision,
+      kClearance,
+      kCollisionSamples},
+     cmdSolve,
+     true},
+    {"rules",
+     "rules [--coverage DIR-or-SPEC...]",
+     "Lists the registered constraint types, combination rules (with their cases), manifolds and "
+     "matchers, built-in and from plugins.",
+     {{"--coverage DIR-or-SPEC...",
+       "instead, solve the specs (a folder's *.json) and count how often each rule case fired; "
+       "lists the cases that never did"}},
+     cmdRules,
+     true},
+    {"table",
+     "table DIR-or-SPEC... [--repeat N] [--collision ...]",
+     "One row per spec (a folder's *.json in name order): status, branches, their DOF and the "
+     "median solve time.",
+     {{"--repeat N", "solves per spec for the median time (default 200)"},
+      kCollision,
+      kClearance,
+      kCollisionSamples,
+      kWindow,
+      kSeed},
+     cmdTable,
+     true},
+    {"batch",
+     "batch DIR-or-FILE.jsonl [--jobs N] [-o OUT.jsonl] [solve options]",
+     "Solves many specs (a folder's *.json, or one spec per line of a JSONL file) and writes one "
+     "result line each, in input order; a summary on stderr.",
+     {{"--jobs N", "worker threads (default: one per core)"},
+      {"-o OUT.jsonl", "write the lines to OUT.jsonl instead of standard output"},
+      kSamples,
+      kWindow,
+      kSeed,
+      kCollision,
+      kClearance,
+      kCollisionSamples},
+     cmdBatch,
+     true},
+    {"help", "help [COMMAND]", "Prints the usage, or one command's help.", {}, cmdNone, false},
+    {"version",
+     "--version",
+     "Prints relpos's version and its plugin ABI version.",
+     {},
+     cmdNone,
+     false},
+};
+
+// What every command accepts.
+constexpr Option kCommon[] = {
+    {"--plugin LIB.so", "load a plugin first (repeatable; after RELPOS_PLUGIN_PATH)"},
+    {"--allow-override", "let a plugin replace a registered name"},
+    {"-h, --help", "this help"},
+};
+
+// `text` from column `at` on, broken between words before column 100, continued at `indent`.
+void wrapped(std::ostream& out, const std::string& text, std::size_t at, std::size_t indent) {
+  std::size_t column = at;
+  bool line_start = true;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t end = std::min(text.find(' ', i), text.size());
+    const std::size_t word = end - i;
+    if (!line_start && column + 1 + word > 100) {
+      out << "\n" << std::string(indent, ' ');
+      column = indent;
+      line_start = true;
+    }
+    if (!line_start) out << ' ', ++column;
+    out << text.substr(i, word);
+    column += word;
+    line_start = false;
+    i = end + 1;
+  }
+  out << "\n";
+}
+
+void printOption(std::ostream& out, const Option& o) {
+  out << "  " << o.flag;
+  const std::size_t width = std::strlen(o.flag);
+  if (width < 26)
+    out << std::string(26 - width, ' ');
+  else
+    out << "\n" << std::string(28, ' ');
+  wrapped(out, o.what, 28, 28);
+}
+
+}  // namespace
+
+const Command* findCommand(const std::string& name) {
+  for (const Command& c : kCommands)
+    if (name == c.name || (name == "--version" && std::strcmp(c.name, "version") == 0)) return &c;
+  return nullptr;
+}
+
+void printUsage(std::ostream& out) {
+  out << "usage:\n";
+  for (const Command& c : kCommands)
+    if (std::strcmp(c.name, "help") != 0) out << "  relpos " << c.synopsis << "\n";
+  out << "  relpos help COMMAND (or relpos COMMAND --help): each option described\n"
+         "every command: [--plugin LIB.so]... [--allow-override] [--help];\n"
+         "  RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n";
+}
+
+void printHelp(std::ostream& out, const Command& c) {
+  out << "usage: relpos " << c.synopsis << "\n\n";
+  wrapped(out, c.what, 0, 0);
+  if (c.options.size() > 0) {
+    out << "\noptions:\n";
+    for (const Option& o : c.options) printOption(out, o);
+  }
+  out << "\nevery command:\n";
+  for (const Option& o : kCommon) printOption(out, o);
+  out << "  RELPOS_PLUGIN_PATH=FILE-or-DIR:...\n"
+      << std::string(28, ' ') << "plugins to load first (a folder: its *.so)\n";
+}
+
+}  // namespace relpos::cli

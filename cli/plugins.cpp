@@ -1,0 +1,72 @@
+// The plugins a command loads before it reads its specs.
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "file_text.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/text.hpp"
+#include "relpos/plugins/loader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace relpos::cli {
+
+// Loads, in order, the plugins of RELPOS_PLUGIN_PATH, of --plugin, and of the "plugins" lists of
+// the specs the command will read. The first failure is one line on stderr; false then.
+bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
+  struct Item {
+    std::string path, where;  // where: what named it, for the message
+  };
+  std::vector<Item> items;
+  if (const char* env = std::getenv("RELPOS_PLUGIN_PATH"))
+    for (const auto& p : relpos::plugins::expandPluginPath(env))
+      items.push_back({p, "RELPOS_PLUGIN_PATH: "});
+  for (const auto& p : a.plugins) items.push_back({p, ""});
+  std::vector<std::string> specs;
+  if (cmd == "solve" && a.positional.size() == 1) specs = a.positional;
+  const bool batch = cmd == "batch" && a.positional.size() == 1;
+  if ((cmd == "table" || (cmd == "rules" && a.coverage) ||
+       (batch && fs::is_directory(a.positional[0]))) &&
+      !a.positional.empty())
+    specs = specFiles(a.positional);
+  else if (batch && fs::is_regular_file(a.positional[0])) {
+    // A JSONL file: each line's list, relative to the file's folder. One search of the whole
+    // text first: most batches name no plugin, and then no line needs looking at.
+    // The lines are views into the mapped text (as the batch reads them), numbered alike.
+    const FileText text(a.positional[0]);
+    const std::string dir = fs::path(a.positional[0]).parent_path().string();
+    const std::string_view all =
+        relpos::mentionsPlugins(text.view()) ? text.view() : std::string_view();
+    std::size_t n = 0;
+    for (std::size_t at = 0; at < all.size(); ++n) {
+      const std::size_t end = std::min(all.find('\n', at), all.size());
+      const auto paths = relpos::specPluginPathsInText(all.substr(at, end - at), dir);
+      for (std::size_t i = 0; i < paths.size(); ++i)  // "FILE:LINE: plugins[i]: ", one line
+        items.push_back(
+            {paths[i], relpos::formatDiagnostic(a.positional[0] + ":" + std::to_string(n + 1),
+                                                {"plugins[" + std::to_string(i) + "]", ""})});
+      at = end + 1;
+    }
+  }
+  for (const auto& spec : specs) {
+    const auto paths = relpos::specPluginPaths(spec);
+    for (std::size_t i = 0; i < paths.size(); ++i)
+      items.push_back({paths[i], spec + ": plugins[" + std::to_string(i) + "]: "});
+  }
+  relpos::plugins::LoadOptions options;
+  options.allow_override = a.allow_override;
+  for (const auto& item : items) {
+    std::string error;
+    if (!relpos::plugins::loadPlugin(item.path, reg, &error, options)) {
+      std::cerr << "relpos: " << oneLine(item.where + error) << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace relpos::cli

@@ -1,0 +1,75 @@
+#pragma once
+// The result of SPEC.md §2 as C++ values: what relpos::evaluate (report/) computes from a solved
+// problem and what the result writer serialises. Nothing here runs a branch's code: a Report is
+// plain data, to hand to a controller, a planner export or bindings. Reused across problems (a
+// batch worker keeps one) it keeps its buffers' capacity.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "relpos/core/manifold.hpp"
+#include "relpos/core/solution.hpp"
+#include "relpos/core/solver.hpp"
+
+namespace relpos {
+
+// A pose of a branch: its parameters and X_WM(θ).
+struct SamplePose {
+  Params parameters{};
+  Isometry3d pose = Isometry3d::Identity();
+};
+
+// The mobile object touching one object of the collision scene.
+struct Contact {
+  std::string object;
+  double depth;  // penetration depth; negative: the missing distance to the clearance
+};
+
+// One branch's collision verdict (SPEC.md §2 "Collision fields").
+struct CollisionReport {
+  bool nearest_collides = false;
+  std::vector<Contact> nearest_contacts;
+  bool has_nearest_free = false;
+  NearestPose nearest_free;         // when has_nearest_free
+  std::string nearest_free_reason;  // otherwise: why there is none
+  std::vector<SamplePose> free_samples;
+  int blocked_samples = 0;
+};
+
+struct BranchReport {
+  int dof = 0;
+  int rotational_dof = -1;  // -1 for a mixed manifold (written as null), with translational_dof
+  int translational_dof = -1;
+  std::string manifold;  // Manifold::describe()
+  std::array<Parameter, kMaxDof> parameters{};
+  NearestPose nearest;           // the branch's pose nearest the initial pose
+  std::size_t first_sample = 0;  // its samples: Report::samples[first_sample, + sample_count)
+  std::size_t sample_count = 0;
+};
+
+struct Report {
+  std::string name;
+  Status status = Status::kNotSolved;
+  std::string message;  // the solution's, with the user's constraint ids next to the conflicts
+  std::vector<BranchReport> branches;
+  std::vector<SamplePose> samples;  // every branch's, in branch order (BranchReport::first_sample)
+  int best = -1;                    // the branch whose nearest pose is nearest; -1: none
+  std::vector<int> conflicts;
+  std::vector<int> redundant;
+  std::vector<const char*> rules;  // Solution::rules
+  double solve_us = 0.0;
+
+  // Collision fields, when evaluated against a scene.
+  bool collision_checked = false;
+  std::vector<std::string> checked_against;
+  double clearance = 0.0;
+  std::vector<CollisionReport> collision;  // per branch
+  int collision_free_branches = 0;
+
+  const SamplePose* samplesOf(std::size_t b) const {
+    return samples.data() + branches[b].first_sample;
+  }
+};
+
+}  // namespace relpos
