@@ -70,4 +70,9 @@ Args parseArgs(int argc, char** argv, int first) {
   return a;
 }
 
+void requireCollisionForItsOptions(const Args& a) {
+  if (a.collision_option && !a.collision)
+    throw UsageError("--clearance and --collision-samples need --collision");
+}
+
 }  // namespace relpos::cli

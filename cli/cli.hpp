@@ -29,6 +29,9 @@ struct Args {
 
 // The options after the command (argv[first]...). Throws UsageError.
 Args parseArgs(int argc, char** argv, int first);
+// --clearance and --collision-samples mean nothing without --collision: a usage error, not an
+// option silently ignored (solve, batch and table).
+void requireCollisionForItsOptions(const Args& a);
 
 // The spec files of folders (their *.json in name order) and files given on the command line.
 std::vector<std::string> specFiles(const std::vector<std::string>& inputs);

@@ -238,8 +238,7 @@ void printSummary(const std::vector<Outcome>& outcomes, std::size_t written, dou
 
 int cmdBatch(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("batch takes one folder or one JSONL file");
-  if (a.collision_option && !a.collision)
-    throw UsageError("--clearance and --collision-samples need --collision");
+  requireCollisionForItsOptions(a);
   Input input;
   collectItems(a.positional[0], &input);
   const std::vector<Item>& items = input.items;

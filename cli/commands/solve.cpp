@@ -12,8 +12,7 @@ namespace relpos::cli {
 
 int cmdSolve(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("solve takes exactly one spec file");
-  if (a.collision_option && !a.collision)
-    throw UsageError("--clearance and --collision-samples need --collision");
+  requireCollisionForItsOptions(a);
   // Before solving: an -o that cannot be written is known now, not after the work.
   if (!a.out.empty()) checkOutput(a.out, a.positional, OutputMode::kReplace);
   relpos::Problem pb;

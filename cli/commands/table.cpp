@@ -17,6 +17,7 @@ namespace relpos::cli {
 // median solve time over --repeat solves.
 int cmdTable(const Args& a, const Registry& reg) {
   if (a.positional.empty()) throw UsageError("table needs a folder or spec files");
+  requireCollisionForItsOptions(a);
   const auto files = specFiles(a.positional);
   std::printf("%-36s %-13s %8s %-12s %10s%s\n", "name", "status", "branches", "DOF", "median us",
               a.collision ? "  free branches" : "");

@@ -340,9 +340,16 @@ TEST(CliCollision, SolveWritesTheCollisionFields) {
 }
 
 TEST(CliCollision, ClearanceWithoutCollisionIsAUsageError) {
-  CmdResult r = run("solve " + kPartOnTable + " --clearance 0.01");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--clearance and --collision-samples need --collision"), std::string::npos);
+  // Every command that filters collisions: table accepted and ignored them (docs/spec.md §3).
+  for (const std::string cmd : {"solve ", "table ", "batch "}) {
+    for (const std::string option : {" --clearance 0.01", " --collision-samples 3"}) {
+      SCOPED_TRACE(cmd + option);
+      CmdResult r = run(cmd + kPartOnTable + option);
+      EXPECT_EQ(r.code, 2);
+      EXPECT_NE(r.err.find("--clearance and --collision-samples need --collision"),
+                std::string::npos);
+    }
+  }
 }
 
 TEST(CliCollision, BadMeshesAreExitTwoWithTheirJsonPath) {
