@@ -31,7 +31,7 @@ const Command kCommands[] = {
     {"solve",
      "solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
      "               [--collision [--clearance C] [--collision-samples N]]",
-     "Solves one spec and prints its result document (docs/spec.md, \"The result\"), indented.",
+     "Solves one spec and prints its result document (docs/spec.md §2), indented.",
      {kSamples,
       kWindow,
       kSeed,
