@@ -269,7 +269,7 @@ void writeLine(const Problem& problem, const Solution& solution, const ResultOpt
   w.list(static_cast<int>(solution.redundant.size()),
          [&](int i) { w.integer(solution.redundant[i]); });
   w.key("rules");
-  w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.rules[i]); });
+  w.list(static_cast<int>(solution.rules.size()), [&](int i) { w.string(solution.ruleName(i)); });
   w.key("stats");
   w.raw("{");
   w.key("solve_us");

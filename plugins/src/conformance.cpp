@@ -26,7 +26,8 @@ std::string poseText(const Isometry3d& X) {
 double fundamentalResidual(const Fundamental& f, const Isometry3d& X, const Registry* registry) {
   if (f.kind == FundamentalKind::kCustom) {
     if (!registry || f.custom >= registry->customKinds().size()) return HUGE_VAL;
-    return registry->customKinds()[f.custom].residual(f, X);
+    const CustomKindInfo& kind = registry->customKinds()[f.custom];
+    return kind.residual(f, X, kind.context);
   }
   const Matrix3d R = X.linear();
   const Vector3d T = X.translation();

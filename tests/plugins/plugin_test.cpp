@@ -7,6 +7,7 @@
 #include <link.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -130,7 +131,7 @@ TEST(Plugins, RandomCentredGraspsContainTheKnownPose) {
     ASSERT_LT(worstViolation(p, X), 1e-9);
     Solution s = solve(p, exampleRegistry());
     ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    for (const char* rule : s.rules) {
+    for (const char* rule : s.ruleNames()) {
       annulus += std::string(rule) == "shell-cut:pp+pplane/annulus";
       disc += std::string(rule) == "shell-cut:pp+pplane/disc";
     }
@@ -345,8 +346,43 @@ TEST(BadPlugins, ALibraryWithoutTheEntryPoint) {
 }
 
 TEST(BadPlugins, AWrongAbiVersion) {
-  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so",
-                "built for relpos plugin ABI " + std::to_string(kPluginAbiVersion + 1) + ".");
+  expectRefused(
+      RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so",
+      "built for relpos plugin ABI " + std::to_string(kPluginAbiVersion + 1) + " (layout 0x");
+}
+
+// The same version, other layouts: refused with the version and both fingerprints named.
+TEST(BadPlugins, AWrongLayoutFingerprint) {
+  char mine[32], theirs[32];
+  std::snprintf(mine, sizeof mine, "%#lx", pluginAbiFingerprintOf(pluginAbi()));
+  std::snprintf(theirs, sizeof theirs, "%#lx", pluginAbiFingerprintOf(pluginAbi() ^ 1L));
+  const std::string v = std::to_string(kPluginAbiVersion);
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-layout.so",
+                "built for relpos plugin ABI " + v + " (layout " + theirs + "), this relpos has " +
+                    v + " (layout " + mine +
+                    "): the same version built from headers with other shared layouts");
+}
+
+// The fingerprint reads layouts and signatures: a callback with one more parameter, or a struct
+// with one more member, is another fingerprint.
+TEST(PluginAbi, TheFingerprintSeesSignaturesAndLayouts) {
+  using Two = void (*)(const Fundamental&, const void*);
+  using Three = void (*)(const Fundamental&, const void*, int);
+  EXPECT_NE(abi::Signature<Two>::value, abi::Signature<Three>::value);
+  using ByValue = void (*)(Fundamental, const void*);
+  EXPECT_NE(abi::Signature<Two>::value, abi::Signature<ByValue>::value);
+  struct A {
+    double x;
+    int y;
+  };
+  struct B {
+    int y;
+    double x;
+  };
+  EXPECT_NE(abi::hash(RELPOS_ABI_MEMBER(A, x), RELPOS_ABI_MEMBER(A, y)),
+            abi::hash(RELPOS_ABI_MEMBER(B, x), RELPOS_ABI_MEMBER(B, y)));
+  EXPECT_EQ(pluginAbiVersionOf(pluginAbi()), kPluginAbiVersion);
+  EXPECT_EQ(pluginAbiVersionOf(5 * 1000000L + 4242), 5);  // an answer of version 5's form
 }
 
 TEST(BadPlugins, APluginThatThrowsWhileRegistering) {

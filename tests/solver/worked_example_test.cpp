@@ -67,8 +67,8 @@ TEST(WorkedExample, BranchSweepsTheWholeSolutionCircle) {
 TEST(WorkedExample, RulesThatFireAreNamed) {
   Solution s = solve(workedExample(), builtinRegistry());
   ASSERT_GE(s.rules.size(), 2u);
-  EXPECT_STREQ(s.rules[0], "pl+pl/lines-meet");
-  EXPECT_STREQ(s.rules[1], "pp+pp/equal-span");
+  EXPECT_STREQ(s.ruleName(0), "pl+pl/lines-meet");
+  EXPECT_STREQ(s.ruleName(1), "pp+pp/equal-span");
 }
 
 }  // namespace
