@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "relpos/rules/builtin.hpp"
 
 namespace {

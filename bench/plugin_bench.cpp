@@ -11,7 +11,7 @@
 #include <string>
 
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"
 

@@ -8,7 +8,8 @@
 #include "errors.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/registry.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 
 namespace relpos::cli {
 

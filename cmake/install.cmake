@@ -4,6 +4,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set_target_properties(relpos_core PROPERTIES EXPORT_NAME core)
+set_target_properties(relpos_io PROPERTIES EXPORT_NAME io)
 set_target_properties(relpos_rules PROPERTIES EXPORT_NAME rules)
 set_target_properties(relpos_manifolds PROPERTIES EXPORT_NAME manifolds)
 set_target_properties(relpos_plugin_sdk PROPERTIES EXPORT_NAME plugin)
@@ -11,7 +12,7 @@ set_target_properties(relpos_plugin_loader PROPERTIES EXPORT_NAME plugin_loader)
 set_target_properties(relpos_conformance PROPERTIES EXPORT_NAME conformance)
 set_target_properties(relpos PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 
-install(TARGETS relpos_core relpos_rules relpos_manifolds relpos_plugin_sdk relpos_plugin_loader
+install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_plugin_sdk relpos_plugin_loader
                 relpos_conformance
         EXPORT relpos-targets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -20,7 +21,7 @@ install(TARGETS relpos_core relpos_rules relpos_manifolds relpos_plugin_sdk relp
 install(TARGETS relpos RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS relpos_plugin_symmetric relpos_plugin_helical
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/relpos/plugins)
-foreach(folder core rules manifolds plugins)
+foreach(folder core io rules manifolds plugins)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/relpos
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

@@ -13,7 +13,7 @@
 #include "evaluator.hpp"
 #include "peers.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/rules/builtin.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/result_writer.hpp"
 
 namespace relpos::collision {
 namespace {

@@ -12,7 +12,7 @@
 #include "evaluator.hpp"
 #include "random_problems.hpp"
 #include "relpos/collision/branch_filter.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -11,7 +11,8 @@
 #include <vector>
 
 #include "relpos/core/problem.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 
 namespace relpos::fuzz {
 

@@ -12,7 +12,8 @@
 
 #include "known_failures.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "relpos/rules/builtin.hpp"
 #include "result_checks.hpp"
 

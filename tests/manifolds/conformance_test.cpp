@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "evaluator.hpp"
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "problem_transforms.hpp"
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

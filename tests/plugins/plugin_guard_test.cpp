@@ -9,7 +9,8 @@
 
 #include "bad/manifold_throws.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"

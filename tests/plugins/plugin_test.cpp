@@ -19,7 +19,7 @@
 #include "expected_results.hpp"
 #include "random_problems.hpp"
 #include "relpos/core/plugin_api.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"

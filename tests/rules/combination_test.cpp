@@ -10,7 +10,7 @@
 #include <set>
 
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"

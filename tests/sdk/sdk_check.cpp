@@ -6,7 +6,7 @@
 #include <random>
 
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/rules/builtin.hpp"

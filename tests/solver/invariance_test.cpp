@@ -23,7 +23,7 @@
 #include "failure_log.hpp"
 #include "problem_transforms.hpp"
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "result_checker.hpp"
 #include "seed_offset.hpp"
 #include "solve_helpers.hpp"

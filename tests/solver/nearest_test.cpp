@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 

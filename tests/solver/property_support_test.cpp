@@ -6,7 +6,7 @@
 
 #include "problem_transforms.hpp"
 #include "random_problems.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "result_checker.hpp"
 #include "solve_helpers.hpp"
 #include "spec_writer.hpp"

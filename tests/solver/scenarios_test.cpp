@@ -17,7 +17,7 @@ TEST(Scenarios, MatchExpectedStatusAndDof) {
 #include <random>
 
 #include "evaluator.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "evaluator.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

@@ -11,7 +11,7 @@
 #include "evaluator.hpp"
 #include "problem_transforms.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {

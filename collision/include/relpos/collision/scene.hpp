@@ -10,7 +10,7 @@
 
 #include "relpos/collision/mesh.hpp"
 #include "relpos/core/problem.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/core/diagnostic.hpp"
 
 namespace relpos::collision {
 

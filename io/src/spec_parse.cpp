@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "json_read.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "spec_document.hpp"
 #include "utf8.hpp"
 

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 
 namespace relpos::detail {
 

@@ -1,24 +1,17 @@
 #pragma once
-// Reading specs and writing results (SPEC.md §1–2). Bad input never throws out of these
+// Reading specs (SPEC.md §1). Bad input never throws out of these
 // functions: every problem found becomes a Diagnostic naming the JSON path and what is wrong,
 // on one line (control characters and ill-formed UTF-8 in echoed text are escaped).
-#include <cstdint>
-#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "relpos/core/diagnostic.hpp"
 #include "relpos/core/problem.hpp"
 #include "relpos/core/registry.hpp"
-#include "relpos/core/solution.hpp"
 
 namespace relpos {
-
-struct Diagnostic {
-  std::string path;     // JSON path, e.g. "constraints[3].mobile"; "" for the whole document
-  std::string message;  // what is wrong
-};
 
 struct ParseResult {
   std::optional<Problem> problem;  // set only when there are no errors
@@ -47,23 +40,5 @@ bool mentionsPlugins(std::string_view text);
 // "file: path: message" (path omitted when empty), on one line and in valid UTF-8 whatever the
 // file name holds: \n \r \t \0, \xHH for other control bytes, DEL and bytes that are not UTF-8.
 std::string formatDiagnostic(const std::string& file, const Diagnostic& d);
-
-struct ResultOptions {
-  int samples = 0;      // poses per branch (--samples)
-  double window = 1.0;  // half-width for unbounded length parameters (--window)
-  std::uint64_t seed = 0;
-};
-
-// A pose as SPEC.md §2 writes it: parameters, position, orientation (x, y, z, w with w ≥ 0).
-nlohmann::ordered_json poseToJson(const Isometry3d& X, const Params& theta, int dof);
-
-// The result document of SPEC.md §2 (nearest pose per branch, best, samples, etc.) as one line
-// of compact JSON, into `out` (reused: a batch keeps one per thread).
-void writeResultLine(const Problem& problem, const Solution& solution, const ResultOptions& options,
-                     std::string& out);
-
-// The same document as a JSON tree (to add fields to, or to print indented).
-nlohmann::ordered_json resultToJson(const Problem& problem, const Solution& solution,
-                                    const ResultOptions& options);
 
 }  // namespace relpos

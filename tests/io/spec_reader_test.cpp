@@ -1,4 +1,4 @@
-// The spec reader (simdjson with relpos's diagnostics, core/src/json_read.hpp) on every kind of
+// The spec reader (simdjson with relpos's diagnostics, io/src/json_read.hpp) on every kind of
 // text: numbers read exactly as strtod reads them, malformed text named by line and column (also
 // when it holds non-ASCII or invalid UTF-8), any depth of nesting refused without a crash, keys
 // and feature names twice refused at their JSON path in linear time, numbers beyond a double
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 

@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 
 namespace relpos::detail {
 

@@ -14,7 +14,7 @@
 #include <random>
 
 #include "relpos/core/solver.hpp"
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/result_writer.hpp"
 #include "utf8.hpp"
 
 namespace relpos {

@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "relpos/core/spec_io.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
