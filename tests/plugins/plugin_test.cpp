@@ -363,6 +363,29 @@ TEST(BadPlugins, AWrongLayoutFingerprint) {
                     "): the same version built from headers with other shared layouts");
 }
 
+// A slide along x whose project() forgets where it was (always 0): the kit names the invariant.
+class ForgetfulSlide final : public MixedManifoldBase<ForgetfulSlide> {
+ public:
+  const char* typeName() const override { return "ForgetfulSlide"; }
+  int dof() const override { return 1; }
+  Parameter parameter(int) const override { return {"x", ParamKind::kLength, -1.0, 1.0, false}; }
+  Isometry3d pose(const Params& t) const override {
+    Isometry3d X = Isometry3d::Identity();
+    X.translation().x() = t[0];
+    return X;
+  }
+  Params project(const Isometry3d&) const override { return Params{}; }
+  std::string describe() const override { return "forgetful slide"; }
+};
+
+TEST(Conformance, AFailureIsNamedByTheInvariantThatBroke) {
+  plugins::Report report;
+  plugins::checkManifold(ForgetfulSlide(), 3, report, 5);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.failures[0].rfind("[params-round-trip] forgetful slide: ", 0), 0u)
+      << report.text();
+}
+
 // The fingerprint reads layouts and signatures: a callback with one more parameter, or a struct
 // with one more member, is another fingerprint.
 TEST(PluginAbi, TheFingerprintSeesSignaturesAndLayouts) {
