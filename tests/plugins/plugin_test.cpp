@@ -72,6 +72,31 @@ TEST(Plugins, LoadingTheSamePathTwiceIsOneLoad) {
   EXPECT_EQ(r.pluginPaths().size(), 1u);
 }
 
+double noResidual(const Fundamental&, const Isometry3d&, const void*) { return 0.0; }
+
+// The helical plugin keeps its kind's index in its callbacks' context, not in a global: two
+// registries in which the kind has different indices both solve a thread, and its branch names
+// the library it comes from (MatcherInfo::library, resolved at registration).
+TEST(Plugins, EachRegistryKeepsItsOwnPluginState) {
+  Registry first;
+  registerBuiltins(first);
+  first.addCustomKind({"taken-first", "moves helical to index 1", &noResidual});
+  std::string error;
+  ASSERT_TRUE(plugins::loadPlugin(kHelical, first, &error)) << error;
+  first.freeze();
+  const Registry second = withPlugins({kHelical});
+  ASSERT_NE(first.customKind("helical") - first.customKinds().data(),
+            second.customKind("helical") - second.customKinds().data());
+  for (const Registry* r : {static_cast<const Registry*>(&first), &second}) {
+    ParseResult pr = parseSpecFile(RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json", *r);
+    ASSERT_TRUE(pr.problem);
+    const Solution s = solve(*pr.problem, *r);
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    ASSERT_NE(s.branches[0].origin, nullptr);
+    EXPECT_EQ(s.branches[0].origin, fs::canonical(kHelical).string());
+  }
+}
+
 // A thread around a known pose: random axis, pitch and turn; the known pose lies on the helix.
 TEST(Plugins, RandomThreadsContainTheKnownPose) {
   Rng rng(77);
