@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace {
 

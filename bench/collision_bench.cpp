@@ -8,8 +8,8 @@
 
 #include <cmath>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/collision/branch_filter.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace {
 using relpos::Vector3d;

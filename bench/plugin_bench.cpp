@@ -10,10 +10,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace {
 

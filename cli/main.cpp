@@ -19,6 +19,7 @@
 #include "cli.hpp"
 #include "file_text.hpp"
 #include "output_file.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/registry.hpp"
@@ -26,7 +27,6 @@
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "safe_text.hpp"
 
 namespace fs = std::filesystem;

@@ -2,8 +2,8 @@
 // (paper 003 §VI-A) in code, solve it, read its branches and evaluate poses.
 #include <cstdio>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/rules/builtin.hpp"
 
 int main() {
   using Eigen::Vector3d;

@@ -12,9 +12,9 @@
 
 #include "evaluator.hpp"
 #include "peers.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace {
 using namespace relpos;

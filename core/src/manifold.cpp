@@ -14,8 +14,8 @@ double poseDistance(const Isometry3d& a, const Isometry3d& b) {
 bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
   Isometry3d Y = pose(project(X));
   double scale = std::max(1.0, X.translation().norm());
-  return (Y.translation() - X.translation()).norm() <= 1e3 * tol.length * scale &&
-         rotationDistance(Y.linear(), X.linear()) <= 1e3 * tol.angle + 1e-7;
+  return (Y.translation() - X.translation()).norm() <= tol.roundTripLength(scale) &&
+         rotationDistance(Y.linear(), X.linear()) <= tol.roundTripAngle();
 }
 
 namespace {

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 
@@ -145,7 +144,7 @@ restart:
         const Fundamental& b = entry.swapped ? list[i] : list[j];
         out.reset();
         if (!guarded(
-                st, [&] { rule.fn(a, b, st.tol, out); },
+                st, [&] { rule.fn(a, b, st.tol, out, rule.context); },
                 [&] { return "rule '" + rule.name + "'" + originNote(rule.origin); }))
           return SetOutcome::kUnhandled;
         if (out.verdict == RuleVerdict::kNoChange) {
@@ -319,7 +318,7 @@ void decomposeAll(const Problem& problem, SolveState& st) {
 // wrapped them in the turn, they would be wrong poses.
 bool allRevolved(const Solution& solution, std::size_t first) {
   for (std::size_t b = first; b < solution.branches.size(); ++b)
-    if (std::strcmp(solution.branches[b].manifold->typeName(), "Revolved") != 0) return false;
+    if (solution.branches[b].manifold->kind() != ManifoldKind::kRevolved) return false;
   return true;
 }
 

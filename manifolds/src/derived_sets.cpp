@@ -146,15 +146,15 @@ bool revolveLine(const ConstraintSet& set, const Vector3d& a, const Tolerance& t
 
 MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
   if (!ctx.branches.canDefer() || anchored(ctx.set)) return MatchResult::kNoMatch;
-  for (int k = 0; k < rots.count; ++k)
-    if (rots.parts[k].kind != RotationKind::kFixed) return MatchResult::kNoMatch;
+  for (int k = 0; k < rots.size(); ++k)
+    if (!rots.parts[k].is<rotation::Fixed>()) return MatchResult::kNoMatch;
   const auto& ts = ctx.set.translational;
   Fundamental shapes[kMaxFundamentals][2];
   int n_shapes[kMaxFundamentals];
   ConstraintSet derived;
   const double lever = mobileLever(ctx.set);
-  for (int k = 0; k < rots.count; ++k) {
-    const Matrix3d& R = rots.parts[k].R0;
+  for (int k = 0; k < rots.size(); ++k) {
+    const Matrix3d& R = rots.parts[k].as<rotation::Fixed>()->R0;
     // One derived set per choice of side for every two-sided shape (a mixed odometer).
     int combos = 1;
     for (std::size_t i = 0; i < ts.size(); ++i) {
@@ -175,19 +175,20 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
 }
 
 MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
-  if (!ctx.branches.canDefer() || ctx.set.revolve || rots.count == 0) return MatchResult::kNoMatch;
+  if (!ctx.branches.canDefer() || ctx.set.revolve || rots.size() == 0) return MatchResult::kNoMatch;
   Vector3d c[kMaxRotations];
-  for (int k = 0; k < rots.count; ++k)
-    if (rots.parts[k].kind != RotationKind::kOneParallel ||
-        !revolveLine(ctx.set, rots.parts[k].u_f, ctx.tol, &c[k]))
-      return MatchResult::kNoMatch;
+  for (int k = 0; k < rots.size(); ++k) {
+    const auto* spin = rots.parts[k].as<rotation::OneParallel>();
+    if (!spin || !revolveLine(ctx.set, spin->u_f, ctx.tol, &c[k])) return MatchResult::kNoMatch;
+  }
   ConstraintSet derived;
   const double lever = mobileLever(ctx.set);
-  for (int k = 0; k < rots.count; ++k) {
-    startDerived(ctx.set, rots.parts[k].R0, rots.err[k], lever, derived);
+  for (int k = 0; k < rots.size(); ++k) {
+    const auto& spin = *rots.parts[k].as<rotation::OneParallel>();
+    startDerived(ctx.set, spin.R0, rots.err[k], lever, derived);
     derived.revolve = true;
     derived.revolve_point = c[k];
-    derived.revolve_axis = rots.parts[k].u_f;
+    derived.revolve_axis = spin.u_f;
     for (const auto& f : ctx.set.translational) derived.add(f);
     if (!ctx.branches.defer(derived)) return MatchResult::kOverflow;
   }

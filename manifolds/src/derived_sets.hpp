@@ -16,10 +16,10 @@ struct RotationAlternatives {
   // err[k]: how far parts[k] may turn from the exact rotation (radians), when it was fixed from
   // derived vectors (Fundamental::err); 0 for vectors as given.
   double err[kMaxRotations];
-  int count = 0;
+  int size() const { return static_cast<int>(parts.size()); }
   void add(const RotationPart& r, double uncertainty = 0.0) {
-    if (!parts.push_back(r)) return;
-    err[count++] = uncertainty;
+    const int k = size();
+    if (parts.push_back(r)) err[k] = uncertainty;
   }
 };
 

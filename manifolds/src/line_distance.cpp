@@ -45,14 +45,14 @@ Params LineDistanceManifold::project(const Isometry3d& X) const {
   const Vector3d a = Y.translation(), u = Y.linear().col(2);
   // Foot of the common perpendicular on the z axis, and the radial direction to the mobile line.
   Vector3d foot_z, foot_m;
-  const bool crossing =
-      closestPointsOfLines(Vector3d::Zero(), Vector3d::UnitZ(), a, u, 1e-12, &foot_z, &foot_m);
+  const bool crossing = closestPointsOfLines(Vector3d::Zero(), Vector3d::UnitZ(), a, u,
+                                             kUnitRounding, &foot_z, &foot_m);
   Vector3d radial = foot_m - foot_z;
   radial.z() = 0.0;
-  if (radial.norm() < 1e-12) {
+  if (radial.norm() < kUnitRounding) {
     // The lines meet (or coincide): any radial direction ⊥ u works; take the one ⊥ u in xy.
     radial = crossing ? Vector3d(Vector3d::UnitZ().cross(u)) : Vector3d::UnitX();
-    if (radial.norm() < 1e-12) radial = Vector3d::UnitX();
+    if (radial.norm() < kUnitRounding) radial = Vector3d::UnitX();
   }
   radial.normalize();
   Params th{};
@@ -74,7 +74,7 @@ Params LineDistanceManifold::project(const Isometry3d& X) const {
 }
 
 bool LineDistanceManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
-  F_.pretranslate(offset_W);  // T(offset_W)·F
+  F_.pretranslate(offset_W);    // T(offset_W)·F
   L_inv_.translate(-offset_M);  // L⁻¹·T(−offset_M)
   return true;
 }

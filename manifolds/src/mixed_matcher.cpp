@@ -2,9 +2,12 @@
 // rotational and a translational part. Today: one line-line distance (skew, or a cylinder-line
 // tangency) on its own, and the radial grasp. (Revolved branches come from the separable
 // matcher, which derives their inner fixed-rotation sets.)
+#include <utility>
+
 #include "relpos/core/branch_sink.hpp"
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
+#include "relpos/manifolds/catalogue.hpp"
 #include "relpos/manifolds/line_distance.hpp"
 #include "relpos/manifolds/radial_grasp.hpp"
 
@@ -83,19 +86,7 @@ MatchResult matchMixed(MatchContext& ctx, const void* /*context*/) {
 }  // namespace
 
 void registerMixedManifolds(Registry& registry) {
-  registry.addManifold(
-      {"mixed/LineDistance",
-       "5 DOF (6 with a range): a mobile line at a skew distance from a fixed line, "
-       "as a chain Rz Tz Tx Rx Tz Rz (Somani 004 §IV-A)"});
-  registry.addManifold(
-      {"mixed/RadialGrasp",
-       "2-4 DOF: an approach line meeting a fixed axis at a right angle, the "
-       "fingertip on it at a distance (range) and height (range) (Somani 004 §VI)"});
-  registry.addManifold(
-      {"mixed/Revolved",
-       "1 DOF more than a fixed-rotation branch: that branch turned about a fixed line, when "
-       "the rotation spins about it and every position constraint is symmetric about it "
-       "(Somani 004 Fig. 2c, 2g)"});
+  for (ManifoldInfo& m : mixedManifoldCatalogue()) registry.addManifold(std::move(m));
   registry.addMatcher({"mixed", &matchMixed});
 }
 

@@ -19,7 +19,7 @@ RadialGraspManifold::RadialGraspManifold(const RadialGraspSpec& spec)
   A_.linear() = axisAngle(Vector3d::UnitY(), spec.sigma * kPi / 2);
   // The mobile origin in the approach line's frame: on its z axis, Rz(θ) leaves it in place.
   const Vector3d o = L_inv_.translation();
-  spin_closed_ = o.head<2>().norm() <= 1e-12 * (1.0 + o.norm());
+  spin_closed_ = o.head<2>().norm() <= kUnitRounding * (1.0 + o.norm());
 }
 
 int RadialGraspManifold::dof() const { return 2 + rRanged() + hFree(); }

@@ -23,8 +23,9 @@ Isometry3d RevolvedManifold::pose(const Params& theta) const {
 Params RevolvedManifold::project(const Isometry3d& X) const {
   // The turn about a that best maps the inner rotation R0 onto X's rotation (the one-parallelism
   // projection, PMF 003 §V), then the inner branch's own projection of the pose turned back.
-  RotationPart spin = RotationPart::oneParallel(inner_.rotation().R0.transpose() * a_, a_);
-  spin.R0 = inner_.rotation().R0;
+  const Matrix3d& R0 = inner_.rotation().as<rotation::Fixed>()->R0;
+  rotation::OneParallel spin(R0.transpose() * a_, a_);
+  spin.R0 = R0;
   Params theta{};
   spin.project(X.linear(), theta.data());
   const Params rest = inner_.project(turn(-theta[0]) * X);

@@ -6,10 +6,9 @@ SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPar
     : rot_(r), trans_(t), dof_(r.dof() + t.dof()) {
   if (!trans_.projectsExactly()) return;
   closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
-  const bool spins =
-      rot_.kind == RotationKind::kOneAngle || rot_.kind == RotationKind::kOneAngleRange;
-  spin_closed_ = spins && trans_.invariantUnderSpin(rot_.u_m);
-  if (spin_closed_) closed_form_ |= 1u << 1;  // θ is the second rotation parameter of both
+  const Vector3d* spin_axis = rot_.spinAxis();
+  spin_closed_ = spin_axis && trans_.invariantUnderSpin(*spin_axis);
+  if (spin_closed_) closed_form_ |= 1u << 1;  // θ: the second rotation parameter of every spin
 }
 
 Parameter SeparableManifold::parameter(int i) const {
@@ -40,7 +39,7 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
     Params& t = *theta;
     const Matrix3d P = rot_.spinBase(t.data());
     Matrix3d spin;
-    t[1] = bestSpinAbout(rot_.u_m, X.linear().transpose() * P, &spin);
+    t[1] = bestSpinAbout(*rot_.spinAxis(), X.linear().transpose() * P, &spin);
     Y.linear() = P * spin;
   } else {
     Y.linear() = rot_.rotation(theta->data());
@@ -57,7 +56,7 @@ bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_
 }
 
 std::string SeparableManifold::describe() const {
-  return std::string("rotation ") + toString(rot_.kind) + ", translation " + toString(trans_.kind);
+  return std::string("rotation ") + rot_.name() + ", translation " + trans_.name();
 }
 
 }  // namespace relpos::manifolds

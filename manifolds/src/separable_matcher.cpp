@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "derived_sets.hpp"
 #include "relpos/core/branch_sink.hpp"
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
+#include "relpos/manifolds/catalogue.hpp"
 #include "relpos/manifolds/revolved.hpp"
 #include "relpos/manifolds/separable.hpp"
 
@@ -78,8 +80,7 @@ MatchResult twoParallels(MatchContext& ctx, const Angle& a0, const Angle& b0,
   const Angle& b = swap ? a0 : b0;
   // Meeting a exactly, the rotation is off by a's own uncertainty, and turned about it by what
   // both leave uncertain in b's part across a (of length s).
-  out.add(RotationPart::fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)),
-          a.err + (a.err + b.err) / s);
+  out.add(rotation::Fixed(rotationPairs(a.u_m, b.u_m, a.u_f, b.u_f)), a.err + (a.err + b.err) / s);
   return MatchResult::kMatched;
 }
 
@@ -94,7 +95,7 @@ struct PhiIntervals {
   bool degenerate = false;
 };
 
-PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const RotationPart& base,
+PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const rotation::TwoAngle& base,
                                const Tolerance& tol) {
   PhiIntervals out;
   const double sigma_m = angleBetween(a.u_m, b.u_m);
@@ -129,13 +130,9 @@ PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const RotationPar
   return out;
 }
 
-RotationPart twoAngleBase(const Angle& a, const Angle& b) {
-  RotationPart base = RotationPart::oneAngle(a.u_m, a.u_f, a.alpha);
-  base.kind = RotationKind::kTwoAngle;
-  base.v_m = b.u_m;
-  base.v_f = b.u_f;
-  base.cos_beta = std::cos(b.alpha);
-  return base;
+rotation::TwoAngle twoAngleBase(const Angle& a, const Angle& b) {
+  return rotation::TwoAngle(rotation::OneAngle(a.u_m, a.u_f, a.alpha), b.u_m, b.u_f,
+                            std::cos(b.alpha));
 }
 
 MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
@@ -145,9 +142,9 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
   // pieces (a full turn of φ gives each connected loop as one branch).
   const Angle* a = &a0;
   const Angle* b = &b0;
-  RotationPart base = twoAngleBase(*a, *b);
+  rotation::TwoAngle base = twoAngleBase(*a, *b);
   PhiIntervals iv = twoAngleIntervals(*a, *b, base, tol);
-  RotationPart base2 = twoAngleBase(b0, a0);
+  rotation::TwoAngle base2 = twoAngleBase(b0, a0);
   PhiIntervals iv2 = twoAngleIntervals(b0, a0, base2, tol);
   if (iv.degenerate || (!iv2.degenerate && iv2.count < iv.count)) {
     std::swap(a, b);
@@ -163,7 +160,7 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
   for (double s : {1.0, -1.0}) {
     if (tol.equalAngle(angleBetween(s * b->u_f, a->u_f), a->alpha) &&
         std::abs(s * cos_sm - std::cos(b->alpha)) <= tol.angle) {
-      out.add(RotationPart::oneParallel(a->u_m, s * b->u_f), a->err + b->err);
+      out.add(rotation::OneParallel(a->u_m, s * b->u_f), a->err + b->err);
       ++n_circles;
     }
   }
@@ -174,11 +171,11 @@ MatchResult twoAngles(MatchContext& ctx, const Angle& a0, const Angle& b0,
     if (iv.iv[k].hi - iv.iv[k].lo <= tol.angle) {
       // A single φ: both θ signs meet, one discrete rotation.
       double th[1] = {0.5 * (iv.iv[k].lo + iv.iv[k].hi)};
-      out.add(RotationPart::fixed(base.rotation(th)), a->err + b->err);
+      out.add(rotation::Fixed(base.rotation(th)), a->err + b->err);
       continue;
     }
     for (double sign : {1.0, -1.0}) {
-      RotationPart r = base;
+      rotation::TwoAngle r = base;
       r.sign = sign;
       r.phi_lo = iv.iv[k].lo;
       r.phi_hi = iv.iv[k].hi;
@@ -203,7 +200,10 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
   // Put a non-degenerate angle first (cyclic order keeps the handedness).
   Angle ang[3] = {a, b, c};
   int first = 0;
-  while (first < 3 && std::sin(ang[first].alpha) < 1e-9) ++first;
+  // (An angle within the tolerance of 0 or π was snapped to 0 by normalise; below the rounding
+  // floor 1 − cos α is lost, and the formula below divides by it.)
+  const double degenerate = ctx.tol.angleAboveRounding();
+  while (first < 3 && std::sin(ang[first].alpha) < degenerate) ++first;
   Matrix3d M, F;
   const SourceMask all = a.sources | b.sources | c.sources;
   if (first == 3) {
@@ -213,7 +213,7 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
     if (diag.prod() < 0)
       return inconsistent(ctx, all, "three angle constraints that no rotation satisfies");
     for (int k = 0; k < 3; ++k) M.col(k) = ang[k].u_m, F.col(k) = ang[k].u_f;
-    out.add(RotationPart::fixed(F * diag.asDiagonal() * M.transpose()), a.err + b.err + c.err);
+    out.add(rotation::Fixed(F * diag.asDiagonal() * M.transpose()), a.err + b.err + c.err);
     return MatchResult::kMatched;
   }
   const Angle& A = ang[first];
@@ -235,9 +235,9 @@ MatchResult threeAngles(MatchContext& ctx, Angle a, Angle b, Angle c, RotationAl
                       axisAngle(Vector3d::UnitX(), t2);
         Matrix3d R = F * R2 * M.transpose();
         bool dup = false;
-        for (int j = 0; j < out.count; ++j)
-          dup = dup || (out.parts[j].R0 - R).cwiseAbs().maxCoeff() < 1e-9;
-        if (!dup) out.add(RotationPart::fixed(R), a.err + b.err + c.err);
+        for (int j = 0; j < out.size(); ++j)
+          dup = dup || (out.parts[j].baseRotation() - R).cwiseAbs().maxCoeff() < degenerate;
+        if (!dup) out.add(rotation::Fixed(R), a.err + b.err + c.err);
       }
   return MatchResult::kMatched;
 }
@@ -269,7 +269,7 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
   RotationAlternatives two;
   MatchResult r = twoParallels(ctx, a, b, two);
   if (r != MatchResult::kMatched) return r;
-  const Matrix3d R = two.parts[0].R0;
+  const Matrix3d R = two.parts[0].baseRotation();
   // What R leaves of the others (each within its tolerance) turns the features as an uncertainty
   // of R would: it joins R's.
   double mismatch = 0.0;
@@ -309,17 +309,18 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
   }
   std::sort(ang, ang + n, geometricLess);
   if (n == 0) {
-    out.add(RotationPart::free());
+    out.add(rotation::Free{});
     return MatchResult::kMatched;
   }
   if (n == 1 && !rs[0].exact()) {
-    out.add(RotationPart::oneAngleRange(rs[0].p, rs[0].q, rs[0].lo, rs[0].hi));
+    out.add(rotation::OneAngleRange(rs[0].p, rs[0].q, rs[0].lo, rs[0].hi));
     return MatchResult::kMatched;
   }
   if (n == 1) {
-    out.add(ang[0].parallel ? RotationPart::oneParallel(ang[0].u_m, ang[0].u_f)
-                            : RotationPart::oneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha),
-            ang[0].err);
+    if (ang[0].parallel)
+      out.add(rotation::OneParallel(ang[0].u_m, ang[0].u_f), ang[0].err);
+    else
+      out.add(rotation::OneAngle(ang[0].u_m, ang[0].u_f, ang[0].alpha), ang[0].err);
     return MatchResult::kMatched;
   }
   if (n == 2 && n_par == 2) return twoParallels(ctx, ang[0], ang[1], out);
@@ -338,9 +339,9 @@ bool invariantDirection(const Fundamental& f, const RotationPart& r, const Toler
     *d_W = f.d;
     return true;
   }
-  if (r.kind == RotationKind::kFixed ||
-      (r.kind == RotationKind::kOneParallel && f.d.cross(r.u_m).norm() <= tol.angle)) {
-    *d_W = r.R0 * f.d;
+  const auto* spin = r.as<rotation::OneParallel>();
+  if (r.is<rotation::Fixed>() || (spin && f.d.cross(spin->u_m).norm() <= tol.angle)) {
+    *d_W = r.baseRotation() * f.d;
     return true;
   }
   return false;
@@ -353,7 +354,7 @@ template <typename Test>
 bool holdsForEveryRotation(const Fundamental& a, const Fundamental& b,
                            const RotationAlternatives& rots, const Tolerance& tol, Test test) {
   if (a.point_side == b.point_side) return test(a.d, b.d);
-  for (int k = 0; k < rots.count; ++k) {
+  for (int k = 0; k < rots.size(); ++k) {
     Vector3d da, db;
     if (!invariantDirection(a, rots.parts[k], tol, &da) ||
         !invariantDirection(b, rots.parts[k], tol, &db) || !test(da, db))
@@ -366,25 +367,27 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
                       const RotationAlternatives& rots, TranslationPart& out) {
   const auto& ts = set.translational;
   if (ts.size() == 0) {
-    out.kind = TranslationKind::kFree;
+    out = translation::Free{};
     return true;
   }
   if (ts.size() == 1) {
     // One shape (PMF Table V), or with a range its thick version (Somani Table VI).
     const Fundamental& f = ts[0];
     const bool ranged = !f.exact(), zero = f.value() == 0.0;
-    out.c1 = f;
     switch (f.kind) {
       case FundamentalKind::kPointPoint:
-        out.kind = ranged ? TranslationKind::kShell
-                          : (zero ? TranslationKind::kPoint : TranslationKind::kSphere);
+        out = ranged ? TranslationPart(translation::Shell(f))
+                     : (zero ? TranslationPart(translation::Point(f))
+                             : TranslationPart(translation::Sphere(f)));
         return true;
       case FundamentalKind::kPointLine:
-        out.kind = ranged ? TranslationKind::kThickCylinder
-                          : (zero ? TranslationKind::kLine : TranslationKind::kCylinder);
+        out = ranged ? TranslationPart(translation::ThickCylinder(f))
+                     : (zero ? TranslationPart(translation::Line(f))
+                             : TranslationPart(translation::Cylinder(f)));
         return true;
       case FundamentalKind::kPointPlane:
-        out.kind = ranged ? TranslationKind::kSlab : TranslationKind::kPlane;
+        out =
+            ranged ? TranslationPart(translation::Slab(f)) : TranslationPart(translation::Plane(f));
         return true;
       case FundamentalKind::kAngle:
       case FundamentalKind::kLineLine:
@@ -402,18 +405,16 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
       other = &ts[k];
   }
   if (!plane || !other) return false;
-  out.c2 = *plane;
-  out.c1 = *other;
   switch (other->kind) {
     case FundamentalKind::kPointPlane:
-      out.kind = TranslationKind::kLineOfPlanes;
+      out = translation::LineOfPlanes(*other, *plane);
       return holdsForEveryRotation(
           *other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
             return a.cross(b).norm() > tol.angle;  // the planes meet in a line
           });
     case FundamentalKind::kPointLine:
-      out.kind =
-          other->value() == 0.0 ? TranslationKind::kPointOfLinePlane : TranslationKind::kEllipse;
+      out = other->value() == 0.0 ? TranslationPart(translation::PointOfLinePlane(*other, *plane))
+                                  : TranslationPart(translation::Ellipse(*other, *plane));
       return holdsForEveryRotation(
           *other, *plane, rots, tol, [&](const Vector3d& a, const Vector3d& b) {
             return std::abs(a.dot(b)) > tol.angle;  // the line (axis) crosses the plane
@@ -426,8 +427,10 @@ bool matchTranslation(const ConstraintSet& set, const Tolerance& tol,
 // Point-plane constraints (exact or ranged), points on lines and pinned points are all planes in
 // translation space: up to three with independent normals, whose relative orientation no rotation
 // of the set changes, make a kPlanes part (segment, strip, parallelepiped, ...).
-bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationAlternatives& rots,
-                 TranslationPart& out) {
+// `given`: the problem's tolerance, before widening by the rotation's uncertainty (tol): the
+// normals' independence is read off the constraints as given.
+bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const Tolerance& given,
+                 const RotationAlternatives& rots, TranslationPart& out) {
   const auto& ts = set.translational;
   int rows = 0;
   for (const auto& f : ts) {
@@ -446,11 +449,11 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
           !holdsForEveryRotation(ts[i], ts[j], rots, tol,
                                  [](const Vector3d&, const Vector3d&) { return true; }))
         return false;
-  out.kind = TranslationKind::kPlanes;
-  out.linear.clear();
-  for (const auto& f : ts) out.linear.push_back(f);
+  translation::Planes planes;
+  for (const auto& f : ts) planes.linear.push_back(f);
+  out = planes;
   // Independent normals (checked at one rotation: their relative orientation is fixed).
-  const Matrix3d R = rots.parts[0].R0;
+  const Matrix3d R = rots.parts[0].baseRotation();
   Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
   int k = 0;
   for (const auto& f : ts) {
@@ -467,7 +470,9 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const RotationA
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(N.topRows(3));
   const auto sv = svd.singularValues();
   int rank = 0;
-  for (int i = 0; i < 3; ++i) rank += sv[i] > 1e-9 * std::max(1.0, sv[0]);
+  // A normal within the angle tolerance of the others' span leaves a singular value below it.
+  const double independent = given.angleAboveRounding() * std::max(1.0, sv[0]);
+  for (int i = 0; i < 3; ++i) rank += sv[i] > independent;
   return rank == k;
 }
 
@@ -488,9 +493,7 @@ bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
         return std::abs(d.dot(n)) > tol.angle;
       }))
     return false;
-  out.kind = TranslationKind::kBoundedCylinder;
-  out.c1 = cyl;
-  out.c2 = pl;
+  out = translation::BoundedCylinder(cyl, pl);
   return true;
 }
 
@@ -517,17 +520,18 @@ MatchResult matchSeparable(MatchContext& ctx, const void* /*context*/) {
   // Directions the rotation carries are known to its uncertainty (a spin axis derived where two
   // cones barely meet): the translational elements' directions are compared within it.
   double rot_err = 0.0;
-  for (int k = 0; k < rots.count; ++k) rot_err = std::max(rot_err, rots.err[k]);
+  for (int k = 0; k < rots.size(); ++k) rot_err = std::max(rot_err, rots.err[k]);
   const Tolerance tol = ctx.tol.widened(rot_err);
   // A line-line distance is mixed (not separable) until the rotation fixes its mobile direction.
   if (hasKind(ctx.set, FundamentalKind::kLineLine) ||
-      (!matchTranslation(ctx.set, tol, rots, trans) && !matchPlanes(ctx.set, tol, rots, trans) &&
+      (!matchTranslation(ctx.set, tol, rots, trans) &&
+       !matchPlanes(ctx.set, tol, ctx.tol, rots, trans) &&
        !matchBoundedCylinder(ctx.set, tol, rots, trans))) {
     r = detail::reanchorForEachRotation(ctx, rots);
     return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);
   }
-  for (int k = 0; k < rots.count; ++k) {
-    if (ctx.set.revolve && rots.parts[k].kind != RotationKind::kFixed) return MatchResult::kNoMatch;
+  for (int k = 0; k < rots.size(); ++k) {
+    if (ctx.set.revolve && !rots.parts[k].is<rotation::Fixed>()) return MatchResult::kNoMatch;
     const bool added =
         ctx.set.revolve
             ? ctx.branches.add<RevolvedManifold>(ctx.set.revolve_point, ctx.set.revolve_axis,
@@ -541,23 +545,7 @@ MatchResult matchSeparable(MatchContext& ctx, const void* /*context*/) {
 }  // namespace
 
 void registerBuiltinManifolds(Registry& registry) {
-  const char* rot[] = {"Fixed", "OneParallel", "OneAngle", "TwoAngle", "Free"};
-  const char* rot_desc[] = {
-      "0 rotational DOF: two parallelisms or three angles on right trihedra (PMF Table III)",
-      "1 DOF: spin about one fixed direction (PMF eq. 3)",
-      "2 DOF: one vector on a cone about a fixed direction (PMF eq. 4)",
-      "1 DOF over phi intervals: two angle constraints (PMF App. III-D)",
-      "3 DOF: roll, pitch, yaw (PMF eq. 5)"};
-  for (int i = 0; i < 5; ++i)
-    registry.addManifold({std::string("rotation/") + rot[i], rot_desc[i]});
-  const char* tr[][2] = {{"R3", "3 DOF: no translational constraint"},
-                         {"Point", "0 DOF: point-point coincidence, or line meets plane"},
-                         {"Line", "1 DOF: point on a line, or point on two planes"},
-                         {"Plane", "2 DOF: point on a plane"},
-                         {"Sphere", "2 DOF: point-point distance"},
-                         {"Cylinder", "2 DOF: point-line distance"},
-                         {"Ellipse", "1 DOF: point-line distance and point on a plane"}};
-  for (auto& t : tr) registry.addManifold({std::string("translation/") + t[0], t[1]});
+  for (ManifoldInfo& m : separableShapeCatalogue()) registry.addManifold(std::move(m));
   registry.addMatcher({"separable", &matchSeparable});
 }
 

@@ -151,7 +151,7 @@ void checkRule(const Registry& registry, const RuleInfo& rule, const Fundamental
                const Fundamental& b, const Tolerance& tol, std::mt19937_64& rng, Report& report,
                const Isometry3d* known) {
   RuleOutput out;
-  rule.fn(a, b, tol, out);
+  rule.fn(a, b, tol, out, rule.context);
   const std::string name = rule.firedName(out.fired);
   auto fail = [&](const char* invariant, const std::string& what) {
     report.failures.push_back(failure(invariant, name, what));

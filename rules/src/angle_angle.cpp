@@ -4,7 +4,7 @@
 // general pair is left to the two-angle rotation of App. III-D.
 #include <cmath>
 
-#include "relpos/rules/builtin.hpp"
+#include "family.hpp"
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
@@ -113,7 +113,7 @@ void parallelismFixes(double implied, double angle, bool first_is_parallelism, c
 }
 
 void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& given,
-               RuleOutput& out) {
+               RuleOutput& out, const void* /*context*/) {
   Ang a = snap(fa, given), b = snap(fb, given);
   // Every comparison allows for how far derived or snapped vectors may be from the exact ones.
   double in_err = a.err + b.err;
@@ -199,17 +199,17 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
   }
 }
 
+constexpr RuleCaseRow kCases[] = {
+    {kIncompatible, "incompatible", "PMF App. IV Table X, row 1"},
+    {kSameVector, "same-vector", "PMF App. IV Table X, row 2 (σ_a = σ_b = nπ, α = β)"},
+    {kTwoCones, "two-cones", "PMF App. IV Table X, row 7 (σ_a = 0): s± of App. II"},
+    {kParallelFixes, "parallel-fixes-angle", "PMF App. IV Table X (β = 0, σ_b = nπ)"},
+    {kParallelAndAngle, "parallel-and-angle", "PMF App. IV Table X, row 8 (β = 0): s± of App. II"}};
+
 }  // namespace
 
-void registerAngleRules(Registry& r) {
-  addFamily(
-      r, "angle+angle", "PMF App. IV Table X", FundamentalKind::kAngle, FundamentalKind::kAngle,
-      &twoAngles,
-      {{"angle+angle/incompatible", "PMF App. IV Table X, row 1"},
-       {"angle+angle/same-vector", "PMF App. IV Table X, row 2 (σ_a = σ_b = nπ, α = β)"},
-       {"angle+angle/two-cones", "PMF App. IV Table X, row 7 (σ_a = 0): s± of App. II"},
-       {"angle+angle/parallel-fixes-angle", "PMF App. IV Table X (β = 0, σ_b = nπ)"},
-       {"angle+angle/parallel-and-angle", "PMF App. IV Table X, row 8 (β = 0): s± of App. II"}});
-}
+constexpr RuleFamily families::angle_angle =
+    family("angle+angle", "PMF App. IV Table X", FundamentalKind::kAngle, FundamentalKind::kAngle,
+           &twoAngles, kCases);
 
 }  // namespace relpos::rules

@@ -228,7 +228,7 @@ void checkAngle(const InputConstraint& c, std::vector<std::string>& problems,
   const double lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
   const char* range = line_plane ? "[-pi/2, pi/2]" : "[0, pi]";
   auto check = [&](const char* field, double v) {
-    if (std::isfinite(v) && (v < lo - 1e-12 || v > hi + 1e-12))
+    if (std::isfinite(v) && (v < lo - kAngleRangeSlack || v > hi + kAngleRangeSlack))
       problems.push_back(std::string(field) + ": angle " + std::to_string(v) + " rad is outside " +
                          range);
   };

@@ -79,9 +79,12 @@ inline Fundamental withErr(Fundamental f, double err) {
 
 // A rule of two translational constraints that decides its lengths within what their derivation
 // leaves uncertain (Fundamental::err, in lengths) besides the tolerance.
-template <RuleFn F>
+// (F: the rule without the context, which no built-in rule reads.)
+using RuleBody = void (*)(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                          RuleOutput& out);
+template <RuleBody F>
 void withLengthErr(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                   RuleOutput& out) {
+                   RuleOutput& out, const void* /*context*/) {
   F(a, b, a.err + b.err > 0.0 ? tol.widenedLength(a.err + b.err) : tol, out);
 }
 
@@ -96,6 +99,11 @@ inline bool acosChecked(double num, double den, double tol, double* angle) {
 // Both constraints have their points on the same object (PMF's "a"), the other elements on "b".
 inline bool sameRoles(const Fundamental& a, const Fundamental& b) {
   return a.point_side == b.point_side;
+}
+// Whether the two constraints constrain the same point of the same object (within the length
+// tolerance), the guard of every rule on one point's two loci.
+inline bool onePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol) {
+  return sameRoles(a, b) && !((a.p - b.p).norm() > tol.length);
 }
 
 // Up to two points of line (c, d) at distance r from point x: c' ± k d with c' the foot of x.
@@ -124,21 +132,6 @@ inline int lineSphere(const Vector3d& c, const Vector3d& d, const Vector3d& x, d
   out[0] = foot + k * d;
   out[1] = foot - k * d;
   return 2;
-}
-
-// Registers a rule family with its cases.
-inline void addFamily(Registry& r, const char* name, const char* citation, FundamentalKind first,
-                      FundamentalKind second, RuleFn fn, std::vector<RuleCase> cases,
-                      bool handles_ranges = false) {
-  RuleInfo info;
-  info.handles_ranges = handles_ranges;
-  info.name = name;
-  info.citation = citation;
-  info.first = first;
-  info.second = second;
-  info.fn = fn;
-  info.cases = std::move(cases);
-  r.addRule(std::move(info));
 }
 
 }  // namespace relpos::rules::detail

@@ -2,13 +2,13 @@
 
 #include <set>
 
-#include "relpos/rules/builtin.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
 namespace {
 
-void noRule(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&) {}
+void noRule(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&, const void*) {}
 
 TEST(Registry, DuplicateNamesAreRejectedUnlessReplacing) {
   Registry r;

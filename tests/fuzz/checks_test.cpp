@@ -11,8 +11,8 @@
 
 #include "known_failures.hpp"
 #include "mutator.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "result_checks.hpp"
 #include "test_config.hpp"
 

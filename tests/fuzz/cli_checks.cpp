@@ -12,10 +12,10 @@
 #include <sstream>
 
 #include "known_failures.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::fuzz {
 namespace {

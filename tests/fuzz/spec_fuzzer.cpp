@@ -11,10 +11,10 @@
 #include <string>
 
 #include "known_failures.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "result_checks.hpp"
 
 namespace {

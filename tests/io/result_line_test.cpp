@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {

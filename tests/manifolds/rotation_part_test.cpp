@@ -11,12 +11,13 @@ namespace relpos::test {
 namespace {
 
 using manifolds::RotationPart;
+namespace rotation = manifolds::rotation;
 
 TEST(RotationPart, OneParallelKeepsTheVectorParallel) {
   Rng rng(1);
   for (int i = 0; i < 100; ++i) {
     Vector3d um = rng.unit(), uf = rng.unit();
-    RotationPart r = RotationPart::oneParallel(um, uf);
+    RotationPart r = rotation::OneParallel(um, uf);
     double t[1] = {rng.uniform(-3, 3)};
     EXPECT_TRUE((r.rotation(t) * um).isApprox(uf, 1e-12));
   }
@@ -27,7 +28,7 @@ TEST(RotationPart, OneAngleKeepsTheAngle) {
   for (int i = 0; i < 100; ++i) {
     Vector3d um = rng.unit(), uf = rng.unit();
     double a = rng.uniform(0, 3.14159);
-    RotationPart r = RotationPart::oneAngle(um, uf, a);
+    RotationPart r = rotation::OneAngle(um, uf, a);
     double t[2] = {rng.uniform(-3, 3), rng.uniform(-3, 3)};
     EXPECT_NEAR(std::acos(std::min(1.0, (r.rotation(t) * um).dot(uf))), a, 1e-7);
   }
@@ -37,7 +38,7 @@ TEST(RotationPart, OneParallelProjectionIsTheClosestSpin) {
   // Brute force over φ agrees with the closed form.
   Rng rng(3);
   for (int i = 0; i < 50; ++i) {
-    RotationPart r = RotationPart::oneParallel(rng.unit(), rng.unit());
+    RotationPart r = rotation::OneParallel(rng.unit(), rng.unit());
     Matrix3d target = rng.pose().linear();
     double t[1];
     r.project(target, t);
@@ -51,7 +52,7 @@ TEST(RotationPart, OneParallelProjectionIsTheClosestSpin) {
 }
 
 TEST(RotationPart, FreeProjectionRecoversRollPitchYaw) {
-  RotationPart r = RotationPart::free();
+  RotationPart r = rotation::Free{};
   for (double pitch : {-1.5707963267948966, -0.4, 0.0, 1.2, 1.5707963267948966}) {
     double t[3] = {0.3, pitch, -2.0};
     Matrix3d R = r.rotation(t);
@@ -59,6 +60,69 @@ TEST(RotationPart, FreeProjectionRecoversRollPitchYaw) {
     r.project(R, back);
     EXPECT_LT(rotationDistance(r.rotation(back), R), 1e-9) << pitch;
   }
+}
+
+TEST(RotationPart, AngleRangeKeepsTheAngleWithinItsBoundsAndProjectsBack) {
+  Rng rng(4);
+  for (int i = 0; i < 100; ++i) {
+    const Vector3d um = rng.unit(), uf = rng.unit();
+    const double lo = rng.uniform(0.1, 1.0), hi = lo + rng.uniform(0.1, 1.5);
+    const RotationPart r = rotation::OneAngleRange(um, uf, lo, hi);
+    ASSERT_EQ(r.dof(), 3);
+    double t[3] = {rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(lo, hi)};
+    const Matrix3d R = r.rotation(t);
+    // The angle parameter is the angle itself (defining equation, evaluated here).
+    EXPECT_NEAR(angleBetween(R * um, uf), t[2], 1e-9);
+    double back[3];
+    r.project(R, back);
+    EXPECT_LT(rotationDistance(r.rotation(back), R), 1e-9);
+    EXPECT_NEAR(back[2], t[2], 1e-9);
+    // The spin about u_m is the second parameter: R = spinBase(t) R(u_m, t[1]).
+    ASSERT_NE(r.spinAxis(), nullptr);
+    EXPECT_LT(rotationDistance(r.spinBase(t) * axisAngle(um, t[1]), R), 1e-12);
+  }
+}
+
+TEST(RotationPart, TwoAngleRotationsMeetBothAngles) {
+  Rng rng(5);
+  int checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
+    // Angles some rotation makes, so that the set is not empty.
+    const Matrix3d R_true = rng.pose().linear();
+    const double alpha = angleBetween(R_true * um, uf), beta = angleBetween(R_true * vm, vf);
+    for (double sign : {1.0, -1.0}) {
+      rotation::TwoAngle two(rotation::OneAngle(um, uf, alpha), vm, vf, std::cos(beta));
+      two.sign = sign;
+      const RotationPart r = two;
+      for (int k = 0; k < 10; ++k) {
+        double t[1] = {rng.uniform(-kPi, kPi)}, theta = 0.0;
+        if (!two.theta(t[0], &theta)) continue;  // φ outside the valid set
+        const Matrix3d R = r.rotation(t);
+        EXPECT_NEAR(angleBetween(R * um, uf), alpha, 1e-7);
+        EXPECT_NEAR(angleBetween(R * vm, vf), beta, 1e-7);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(RotationPart, FixedIsTheNearestRotationAndHasNoParameters) {
+  Rng rng(6);
+  const Matrix3d R = rng.pose().linear();
+  const RotationPart r = rotation::Fixed(R);
+  EXPECT_EQ(r.dof(), 0);
+  EXPECT_LT(rotationDistance(r.rotation(nullptr), R), 1e-12);
+  EXPECT_LT(rotationDistance(r.baseRotation(), R), 1e-12);
+  EXPECT_EQ(r.spinAxis(), nullptr);
+}
+
+TEST(RotationPart, NamesAreTheOnesResultsWrite) {
+  EXPECT_STREQ(RotationPart().name(), "Free");
+  EXPECT_STREQ(
+      RotationPart(rotation::OneAngleRange(Vector3d::UnitX(), Vector3d::UnitZ(), 0.1, 0.2)).name(),
+      "OneAngleMinMax");
 }
 
 }  // namespace

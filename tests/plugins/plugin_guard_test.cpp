@@ -8,11 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include "bad/manifold_throws.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/result_writer.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {

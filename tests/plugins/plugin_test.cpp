@@ -18,11 +18,11 @@
 #include "evaluator.hpp"
 #include "expected_results.hpp"
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 

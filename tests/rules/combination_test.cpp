@@ -82,13 +82,15 @@ TEST(RuleProperties, RulesKeepTheKnownSolution) {
           const Fundamental& a = e.swapped ? fs[j] : fs[i];
           const Fundamental& b = e.swapped ? fs[i] : fs[j];
           RuleOutput out;
-          rule.fn(a, b, tol, out);
+          rule.fn(a, b, tol, out, rule.context);
           const std::string name = rule.firedName(out.fired);
           SCOPED_TRACE(name + " trial " + std::to_string(trial) + " known pose " +
                        poseText(kp.X_WM_star));
           if (out.verdict != RuleVerdict::kNoChange) {
             ++fired[name];
             EXPECT_TRUE(rule.cases.empty() || out.fired >= 0) << rule.name << " fired no case";
+            // A value its case table has no row for (an enum longer than the table).
+            EXPECT_LT(out.fired, static_cast<int>(rule.cases.size())) << rule.name;
           }
           ASSERT_NE(out.verdict, RuleVerdict::kIncompatible) << out.reason;
           std::string bad;
@@ -158,7 +160,7 @@ TEST(RuleProperties, OutputsImplyInputsOnBundledProblems) {
             const Fundamental& a = entry.swapped ? fs[j] : fs[i];
             const Fundamental& b = entry.swapped ? fs[i] : fs[j];
             RuleOutput out;
-            rule.fn(a, b, tol, out);
+            rule.fn(a, b, tol, out, rule.context);
             const std::string name = rule.firedName(out.fired);
             SCOPED_TRACE(name + " in " + e.path().string());
             std::string bad;

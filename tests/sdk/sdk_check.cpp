@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <random>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/conformance.hpp"
 #include "relpos/plugins/loader.hpp"
-#include "relpos/rules/builtin.hpp"
 
 int main() {
   relpos::Registry registry;

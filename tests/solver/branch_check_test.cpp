@@ -9,9 +9,9 @@
 
 #include "evaluator.hpp"
 #include "random_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/branch_sink.hpp"
 #include "relpos/manifolds/separable.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
@@ -23,15 +23,12 @@ Vector3d g_offset = Vector3d::Zero();
 bool g_nan = false;
 
 MatchResult onePoseMatcher(MatchContext& ctx, const void*) {
-  using manifolds::RotationPart;
-  using manifolds::TranslationKind;
-  using manifolds::TranslationPart;
-  TranslationPart t;
-  t.kind = TranslationKind::kPoint;
   const double x = g_nan ? std::numeric_limits<double>::quiet_NaN() : 0.0;
   // T = S_f − R S_m with R = I: the mobile origin goes to the fixed point.
-  t.c1 = Fundamental::pointPoint(Vector3d::Zero(), Vector3d(x, 0, 0) + g_offset, 0.0, 1);
-  return ctx.branches.add<manifolds::SeparableManifold>(RotationPart::fixed(Matrix3d::Identity()), t)
+  const manifolds::translation::Point t(
+      Fundamental::pointPoint(Vector3d::Zero(), Vector3d(x, 0, 0) + g_offset, 0.0, 1));
+  return ctx.branches.add<manifolds::SeparableManifold>(
+             manifolds::rotation::Fixed(Matrix3d::Identity()), t)
              ? MatchResult::kMatched
              : MatchResult::kOverflow;
 }

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/rules/builtin.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {

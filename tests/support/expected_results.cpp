@@ -76,4 +76,14 @@ int checkFolderAgainstExpectations(const std::string& folder, const std::string&
   return checkFolderAgainstExpectations(folder, expected_file, builtinRegistry());
 }
 
+void checkSpecAgainstExpectation(const std::string& spec_path, const std::string& expected_path,
+                                 const Registry& registry) {
+  std::ifstream in(expected_path);
+  ASSERT_TRUE(in) << "missing " << expected_path;
+  const nlohmann::json expected = nlohmann::json::parse(in);
+  ParseResult r = parseSpecFile(spec_path, registry);
+  ASSERT_TRUE(r.problem) << (r.errors.empty() ? "" : r.errors.front().message);
+  checkOne(*r.problem, expected, registry);
+}
+
 }  // namespace relpos::test

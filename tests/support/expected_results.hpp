@@ -1,7 +1,8 @@
 #pragma once
-// Checks bundled specs against their hand-derived expectations (data/expected/*.json): status,
-// branch count, DOF per branch, conflicts, redundant constraints, an optional rule case that must
-// fire, and every sampled pose of every branch against every input constraint.
+// Checks bundled specs against their hand-derived expectations (data/expected/*.json, or one
+// SPEC.expected beside each spec of data/rules): status, branch count, DOF per branch, conflicts,
+// redundant constraints, an optional rule case that must fire, and every sampled pose of every
+// branch against every input constraint.
 #include <string>
 
 #include "relpos/core/registry.hpp"
@@ -14,5 +15,10 @@ namespace relpos::test {
 int checkFolderAgainstExpectations(const std::string& folder, const std::string& expected_file,
                                    const Registry& registry);
 int checkFolderAgainstExpectations(const std::string& folder, const std::string& expected_file);
+
+// Solves the spec at `spec_path` with `registry` and checks it against the expectation (one JSON
+// object, as in data/expected/*.json) in the file `expected_path`.
+void checkSpecAgainstExpectation(const std::string& spec_path, const std::string& expected_path,
+                                 const Registry& registry);
 
 }  // namespace relpos::test

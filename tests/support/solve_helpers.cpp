@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "evaluator.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/plugins/conformance.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::test {
 

@@ -32,7 +32,7 @@ void decomposeSymmetric(const InputConstraint& c, const Feature& plane_W, Source
 enum Case { kDisjoint, kDisc, kAnnulus };
 
 void shellCutByPlane(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                     RuleOutput& out) {
+                     RuleOutput& out, const void* /*context*/) {
   // a: point-point range (point mobile); b: exact point-plane on the same mobile point.
   if (a.exact() || !b.exact() || b.point_side != Side::kMobile || (a.p - b.p).norm() > tol.length)
     return;

@@ -22,7 +22,8 @@ void decompose(const InputConstraint&, const Feature&, SourceMask s, Decompositi
   alt.push_back(f);
 }
 
-void ruleThrows(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&) {
+void ruleThrows(const Fundamental&, const Fundamental&, const Tolerance&, RuleOutput&,
+                const void*) {
   throw std::runtime_error("the rule blew up");
 }
 

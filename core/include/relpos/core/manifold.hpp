@@ -17,8 +17,16 @@ namespace relpos {
 inline constexpr int kMaxDof = 6;
 using Params = std::array<double, kMaxDof>;
 
+// The built-in manifolds give angles and lengths only; kOther is for a plugin's parameter that is
+// neither (SPEC.md §2 lets results say "other"): the nearest-pose search steps it by absolute
+// amounts, as an angle, but does not grid it.
 enum class ParamKind : unsigned char { kAngle, kLength, kOther };
 const char* toString(ParamKind k);
+
+// What the solver must know of a manifold beyond its interface, told by the type itself (not by
+// its name, which is for people: a plugin may pick any): a branch of a set turned about a fixed
+// line (ConstraintSet::revolve) must be a kRevolved one, a pose turned about that line.
+enum class ManifoldKind : unsigned char { kOther, kRevolved };
 
 struct Parameter {
   const char* name = "";
@@ -67,6 +75,9 @@ class Manifold {
     (void)offset_M;
     return false;
   }
+
+  // Last in the table of virtual functions, so that the earlier entries keep their places.
+  virtual ManifoldKind kind() const { return ManifoldKind::kOther; }
 
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;

@@ -86,6 +86,7 @@ struct RuleInfo {
   std::string citation;  // e.g. "PMF App. IV Table I"
   FundamentalKind first, second;
   RuleFn fn = nullptr;
+  const void* context = nullptr;  // handed to every call of fn (RuleFn)
   std::vector<RuleCase> cases;
   std::string origin = "built-in";
   // Whether the rule understands ranges (lo < hi); other rules never see a pair with a range.

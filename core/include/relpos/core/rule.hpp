@@ -60,8 +60,26 @@ struct RuleOutput {
   }
 };
 
-// a and b arrive in the kinds the rule was registered for.
+// a and b arrive in the kinds the rule was registered for. `context` is RuleInfo::context, passed
+// through unchanged (a plugin's own data, so that its rule needs no global; built-in rules ignore
+// it).
 using RuleFn = void (*)(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
-                        RuleOutput& out);
+                        RuleOutput& out, const void* context);
+
+// One case of a rule family declared once: the value its rule passes to RuleOutput::fire, the
+// case's name after "FAMILY/" and its citation. A family lists its cases in a table of these in
+// the order of their values (casesInOrder), so that value, name and citation cannot drift apart.
+struct RuleCaseRow {
+  int value;
+  const char* name;      // e.g. "circle" (the case is then "pp+pplane/circle")
+  const char* citation;  // e.g. "PMF App. IV Table V, row 4 (d_b < p, d_a = 0)"
+};
+// Whether row i of `rows` has the value i: the rule's fire(value) then names rows[value].
+template <std::size_t N>
+constexpr bool casesInOrder(const RuleCaseRow (&rows)[N]) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (rows[i].value != static_cast<int>(i)) return false;
+  return true;
+}
 
 }  // namespace relpos

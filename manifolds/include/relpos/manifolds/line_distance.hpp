@@ -17,7 +17,11 @@ namespace relpos::manifolds {
 class LineDistanceManifold final : public MixedManifoldBase<LineDistanceManifold> {
  public:
   explicit LineDistanceManifold(const Fundamental& f);
-  const char* typeName() const override { return "LineDistance"; }
+  static constexpr const char* kTypeName = "LineDistance";
+  static constexpr const char* kSummary =
+      "5 DOF (6 with a range): a mobile line at a skew distance from a fixed line, "
+      "as a chain Rz Tz Tx Rx Tz Rz (Somani 004 §IV-A)";
+  const char* typeName() const override { return kTypeName; }
   int dof() const override { return ranged() ? 6 : 5; }
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;

@@ -26,7 +26,11 @@ struct RadialGraspSpec {
 class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> {
  public:
   explicit RadialGraspManifold(const RadialGraspSpec& spec);
-  const char* typeName() const override { return "RadialGrasp"; }
+  static constexpr const char* kTypeName = "RadialGrasp";
+  static constexpr const char* kSummary =
+      "2-4 DOF: an approach line meeting a fixed axis at a right angle, the "
+      "fingertip on it at a distance (range) and height (range) (Somani 004 §VI)";
+  const char* typeName() const override { return kTypeName; }
   int dof() const override;
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;

@@ -14,11 +14,17 @@ namespace relpos::manifolds {
 
 class RevolvedManifold final : public MixedManifoldBase<RevolvedManifold> {
  public:
-  // `inner` must have a fixed rotation (RotationKind::kFixed).
+  // `inner` must have a fixed rotation (rotation::Fixed).
   RevolvedManifold(const Vector3d& point, const Vector3d& axis, const SeparableManifold& inner)
       : c_(point), a_(axis), inner_(inner) {}
   static constexpr const char* kTypeName = "Revolved";
+  static constexpr const char* kSummary =
+      "1 DOF more than a fixed-rotation branch: that branch turned about a fixed line, when "
+      "the rotation spins about it and every position constraint is symmetric about it "
+      "(Somani 004 Fig. 2c, 2g)";
   const char* typeName() const override { return kTypeName; }
+  // What the solver checks a branch of a set turned about a line (ConstraintSet::revolve) is.
+  ManifoldKind kind() const override { return ManifoldKind::kRevolved; }
   int dof() const override { return 1 + inner_.dof(); }
   Parameter parameter(int i) const override;
   Isometry3d pose(const Params& theta) const override;
@@ -34,5 +40,7 @@ class RevolvedManifold final : public MixedManifoldBase<RevolvedManifold> {
   Vector3d c_, a_;
   SeparableManifold inner_;
 };
+// The largest built-in type (core/manifold.hpp: kManifoldStorage leaves room for plugins' too).
+static_assert(sizeof(RevolvedManifold) <= kManifoldStorage, "revolved manifold too large");
 
 }  // namespace relpos::manifolds

@@ -1,28 +1,21 @@
 #pragma once
+#include <string>
+#include <vector>
+
 #include "relpos/core/registry.hpp"
 
 namespace relpos::rules {
 // Constraint types of SPEC.md §1 with their decomposition (PMF Table I).
 void registerBuiltinConstraintTypes(Registry& registry);
-// Combination rules, one function per PMF Appendix IV family.
-void registerPinnedPointRules(Registry& registry);      // App. IV rows with p = 0, generalised
-void registerPointPointRules(Registry& registry);       // App. IV Table I
-void registerPointPointLineRules(Registry& registry);   // App. IV Table II
-void registerPointLineRules(Registry& registry);        // App. IV Tables III and IV
-void registerPointPointPlaneRules(Registry& registry);  // App. IV Table V
-void registerPointLinePlaneRules(Registry& registry);   // App. IV Table VI
-void registerPointPlaneRules(Registry& registry);       // App. IV Table VII
-void registerMixedRoleRules(Registry& registry);        // App. IV Tables VIII and IX
-void registerAngleRules(Registry& registry);            // App. IV Table X
-void registerRangeRules(Registry& registry);            // Somani 004 Table VII (ranges)
-void registerRangeCutRules(Registry& registry);  // Somani 004 Table VII (range with exact)
-// Everything above.
+// The combination rules, one family per PMF Appendix IV table (and Somani 004 Table VII for
+// ranges), in the order of rules/src/families.def: that order decides which rule a pair meets
+// first.
 void registerBuiltinRules(Registry& registry);
+// The id of each built-in family in rules/src/families.def (also its source file, rules/src/ID.cpp,
+// and the prefix of its data specs, data/rules/ID--CASE.json), in registration order.
+std::vector<std::string> builtinFamilyIds();
+// A rule family or case name as files spell it: '+' and ':' become '_', '/' becomes "--"
+// ("pp+pplane" → "pp_pplane", "pp+pplane/circle" → "pp_pplane--circle", "range:pp+pp" →
+// "range_pp_pp").
+std::string fileSpelling(const std::string& rule_name);
 }  // namespace relpos::rules
-
-namespace relpos {
-// Registers every built-in constraint type, rule and manifold, then returns. Does not freeze.
-void registerBuiltins(Registry& registry);
-// One frozen registry holding the built-ins, made on first use (tests, benchmarks, tools).
-const Registry& builtinRegistry();
-}  // namespace relpos

@@ -1,0 +1,24 @@
+#pragma once
+// 2 rotational DOF: R(φ, θ) = R(u_f, φ) R0 R(u_m, θ), angle(R u_m, u_f) = α (PMF eq. 4).
+#include "relpos/manifolds/rotation/shape.hpp"
+
+namespace relpos::manifolds::rotation {
+
+struct OneAngle : ShapeBase<OneAngle> {
+  static constexpr const char* kName = "OneAngle";
+  static constexpr const char* kSummary =
+      "2 DOF: one vector on a cone about a fixed direction (PMF eq. 4)";
+  OneAngle(const Vector3d& u_m, const Vector3d& u_f, double alpha);
+  Vector3d u_m, u_f;
+  Matrix3d R0;
+
+  int dof() const { return 2; }
+  Parameter parameter(int i) const;
+  Matrix3d rotation(const double* theta) const;
+  void project(const Matrix3d& R, double* theta) const;
+  Matrix3d baseRotation() const { return R0; }
+  const Vector3d* spinAxis() const { return &u_m; }
+  Matrix3d spinBase(const double* theta) const;
+};
+
+}  // namespace relpos::manifolds::rotation

@@ -1,0 +1,36 @@
+#pragma once
+// What every rotation shape of a separable branch provides (PMF Table III, App. III). Each shape
+// is a small value type in its own header and source, held in RotationShape (shapes.hpp) and
+// called through std::visit: no virtual call per evaluation, no heap. A shape has
+//   static constexpr const char* kName;     // written in results ("rotation OneParallel, ...")
+//   static constexpr const char* kSummary;  // the registry's catalogue entry
+//   int dof() const;
+//   Parameter parameter(int i) const;
+//   Matrix3d rotation(const double* theta) const;
+//   void project(const Matrix3d& R, double* theta) const;  // the nearest rotation's parameters
+// and may replace the defaults of ShapeBase below.
+#include "relpos/core/geometry.hpp"
+#include "relpos/core/manifold.hpp"
+
+namespace relpos::manifolds::rotation {
+
+template <typename Derived>
+struct ShapeBase {
+  // The rotation a matcher checks what holds for every rotation of the shape at (relative
+  // orientations it does not change): the formulas' base rotation R0, or the identity.
+  Matrix3d baseRotation() const { return Matrix3d::Identity(); }
+  // The mobile axis u_m of a trailing spin R = spinBase(θ) R(u_m, θ[1]), or null: the nearest
+  // spin is then closed form when the translation does not move with it.
+  const Vector3d* spinAxis() const { return nullptr; }
+  Matrix3d spinBase(const double* theta) const {
+    (void)theta;
+    return Matrix3d::Identity();
+  }
+};
+
+// A full turn, named `name`.
+inline Parameter turnParameter(const char* name) {
+  return Parameter{name, ParamKind::kAngle, -kPi, kPi, true};
+}
+
+}  // namespace relpos::manifolds::rotation

@@ -1,0 +1,23 @@
+#pragma once
+// A sphere: a point-point distance p > 0 (PP, PMF Table V).
+#include "relpos/manifolds/translation/shape.hpp"
+
+namespace relpos::manifolds::translation {
+
+struct Sphere : ShapeBase<Sphere> {
+  static constexpr const char* kName = "Sphere";
+  static constexpr const char* kSummary = "2 DOF: point-point distance";
+  explicit Sphere(const Fundamental& f) : c(f) {}
+  Fundamental c;
+  template <typename Self, typename Fn>
+  static void eachConstraint(Self& self, Fn fn) {
+    fn(self.c);
+  }
+
+  int dof() const { return 2; }
+  Parameter parameter(int i) const;
+  Vector3d translation(const Matrix3d& R, const double* t) const;
+  void project(const Matrix3d& R, const Vector3d& T, double* t) const;
+};
+
+}  // namespace relpos::manifolds::translation

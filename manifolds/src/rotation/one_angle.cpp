@@ -1,0 +1,31 @@
+#include "relpos/manifolds/rotation/one_angle.hpp"
+
+#include <cmath>
+
+#include "cone.hpp"
+
+namespace relpos::manifolds::rotation {
+
+OneAngle::OneAngle(const Vector3d& u_m, const Vector3d& u_f, double alpha)
+    : u_m(u_m), u_f(u_f), R0(detail::coneBase(u_m, u_f, alpha)) {}
+
+Parameter OneAngle::parameter(int i) const { return turnParameter(i == 0 ? "phi" : "theta"); }
+
+Matrix3d OneAngle::rotation(const double* t) const {
+  return axisAngle(u_f, t[0]) * R0 * axisAngle(u_m, t[1]);
+}
+
+Matrix3d OneAngle::spinBase(const double* t) const { return axisAngle(u_f, t[0]) * R0; }
+
+void OneAngle::project(const Matrix3d& R, double* t) const {
+  // φ puts R0 u_m at the azimuth (about u_f) of R u_m, then θ is the best spin about u_m.
+  Vector3d w0 = R0 * u_m, x = R * u_m;
+  Vector3d w0p = w0 - w0.dot(u_f) * u_f, xp = x - x.dot(u_f) * u_f;
+  t[0] = (xp.norm() < kUnitRounding || w0p.norm() < kUnitRounding)
+             ? 0.0
+             : std::atan2(w0p.cross(xp).dot(u_f), w0p.dot(xp));
+  Matrix3d R1 = axisAngle(u_f, t[0]) * R0;
+  t[1] = bestSpinAbout(u_m, R.transpose() * R1);
+}
+
+}  // namespace relpos::manifolds::rotation

@@ -1,0 +1,25 @@
+// PMF App. IV Table VIII: a point of object a on a line of object b and a point of b on a line
+// of a (mixed_roles.hpp).
+#include "family.hpp"
+#include "mixed_roles.hpp"
+
+namespace relpos::rules {
+namespace {
+using namespace detail;
+
+void lineLine(const Fundamental& x, const Fundamental& y, const Tolerance& tol, RuleOutput& out,
+              const void* /*context*/) {
+  if (x.point_side == Side::kMobile) return pointsOrLines(x, y, false, tol, out);
+  pointsOrLines(y, x, false, tol, out);
+}
+
+constexpr RuleCaseRow kCases[] = {
+    {kPointsOrLines, "points-or-lines", "PMF App. IV Table VIII, row 1"}};
+
+}  // namespace
+
+constexpr RuleFamily families::pl_lp =
+    family("pl+lp", "PMF App. IV Table VIII", FundamentalKind::kPointLine,
+           FundamentalKind::kPointLine, &lineLine, kCases);
+
+}  // namespace relpos::rules

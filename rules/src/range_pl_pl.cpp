@@ -1,0 +1,34 @@
+// Somani et al. (004) Table VII, first rows: coaxial distance ranges on the same point
+// (ranges.hpp).
+#include <cmath>
+#include <utility>
+
+#include "family.hpp"
+#include "ranges.hpp"
+
+namespace relpos::rules {
+namespace {
+using namespace detail;
+
+void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
+                      RuleOutput& out, const void* /*context*/) {
+  if (bothExact(a, b) || !onePoint(a, b, tol)) return;
+  const Vector3d w = b.q - a.q;
+  if (!tol.parallelUnit(a.d.cross(b.d).norm()) || (w - w.dot(a.d) * a.d).norm() > tol.length)
+    return;
+  Interval both;
+  if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both)) one(out, distanceRange(a, both, tol));
+}
+
+constexpr RuleCaseRow kCases[] = {
+    {kDisjoint, "disjoint", "Somani 004 Table VII, coaxial distance ranges: disjoint ranges"},
+    {kNested, "nested", "Somani 004 Table VII, coaxial distance ranges: nested ranges"},
+    {kOverlap, "overlap", "Somani 004 Table VII, coaxial distance ranges: overlapping ranges"}};
+
+}  // namespace
+
+constexpr RuleFamily families::range_pl_pl =
+    family("range:pl+pl", "Somani 004 Table VII", FundamentalKind::kPointLine,
+           FundamentalKind::kPointLine, &coaxialCylinders, kCases, /*handles_ranges=*/true);
+
+}  // namespace relpos::rules

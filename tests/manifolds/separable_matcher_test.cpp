@@ -1,0 +1,172 @@
+// The separable matcher (manifolds/src/separable_matcher.cpp) called directly on constraint sets:
+// sets it matches (each branch checked against the set's constraints, evaluated here), sets it
+// proves inconsistent (naming the sources), sets it defers (derived sets for each rotation) and
+// sets it leaves to others.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "random_problems.hpp"
+#include "relpos/core/solution.hpp"
+#include "relpos/rules/builtin.hpp"
+
+namespace relpos::test {
+namespace {
+
+MatchFn separableMatcher() {
+  for (const MatcherInfo& m : builtinRegistry().matchers())
+    if (m.name == "separable") return m.fn;
+  return nullptr;
+}
+
+struct MatchRun {
+  MatchResult result;
+  Solution out;
+  SourceMask conflict = 0;
+  std::vector<ConstraintSet> deferred;
+};
+
+bool collect(void* state, const ConstraintSet& derived) {
+  static_cast<std::vector<ConstraintSet>*>(state)->push_back(derived);
+  return true;
+}
+
+MatchRun match(const ConstraintSet& set, bool can_defer = false) {
+  MatchRun run;
+  const Tolerance tol;
+  run.out.clear();
+  MatchContext ctx{set, tol, run.out, can_defer ? &collect : nullptr,
+                   can_defer ? &run.deferred : nullptr};
+  run.result = separableMatcher()(ctx);
+  run.conflict = ctx.conflict;
+  return run;
+}
+
+// The angle between R u_m and u_f, minus the constraint's: 0 when it holds.
+double angleError(const Fundamental& f, const Matrix3d& R) {
+  return std::abs(angleBetween(R * f.p, f.q) - f.value());
+}
+
+Params middleParams(const Manifold& m, Rng& rng) {
+  Params t{};
+  for (int i = 0; i < m.dof(); ++i) {
+    const Parameter p = m.parameter(i);
+    const double lo = std::isfinite(p.min) ? p.min : -2, hi = std::isfinite(p.max) ? p.max : 2;
+    t[i] = rng.uniform(lo, hi);
+  }
+  return t;
+}
+
+TEST(SeparableMatcher, OneParallelAndAPointGiveOneSpinAboutIt) {
+  Rng rng(1);
+  ConstraintSet set;
+  const Fundamental par = Fundamental::angle(rng.unit(), rng.unit(), 0.0, 1);
+  const Fundamental pin = Fundamental::pointPoint(rng.point(), rng.point(), 0.0, 2);
+  set.add(par);
+  set.add(pin);
+  MatchRun run = match(set);
+  ASSERT_EQ(run.result, MatchResult::kMatched);
+  ASSERT_EQ(run.out.branches.size(), 1u);
+  const Manifold& m = *run.out.branches[0].manifold;
+  EXPECT_EQ(m.describe(), "rotation OneParallel, translation Point");
+  EXPECT_EQ(m.dof(), 1);
+  for (int k = 0; k < 20; ++k) {
+    const Isometry3d X = m.pose(middleParams(m, rng));
+    EXPECT_LT(angleError(par, X.linear()), 1e-9);
+    EXPECT_LT((X * pin.p - pin.q).norm(), 1e-9);
+  }
+}
+
+TEST(SeparableMatcher, ThreeAnglesOnRightTrihedraGiveRotationsThatMeetThemAll) {
+  Rng rng(2);
+  // Two right trihedra and the angles a rotation R_true makes between them: R_true is among
+  // the answers.
+  const Matrix3d M = axisAngle(rng.unit(), 1.0), F = axisAngle(rng.unit(), -2.0);
+  const Matrix3d R_true = axisAngle(rng.unit(), 0.9);
+  ConstraintSet set;
+  std::vector<Fundamental> fs;
+  for (int k = 0; k < 3; ++k) {
+    const double alpha = angleBetween(R_true * M.col(k), F.col(k));
+    fs.push_back(Fundamental::angle(M.col(k), F.col(k), alpha, SourceMask{1u} << k));
+    set.add(fs.back());
+  }
+  MatchRun run = match(set);
+  ASSERT_EQ(run.result, MatchResult::kMatched);
+  ASSERT_GE(run.out.branches.size(), 1u);
+  ASSERT_LE(run.out.branches.size(), 8u);
+  double nearest_true = 1e300;
+  for (const Branch& b : run.out.branches) {
+    EXPECT_EQ(b.manifold->describe(), "rotation Fixed, translation R3");
+    nearest_true =
+        std::min(nearest_true, rotationDistance(b.manifold->pose(Params{}).linear(), R_true));
+    const Matrix3d R = b.manifold->pose(Params{}).linear();
+    for (const Fundamental& f : fs) EXPECT_LT(angleError(f, R), 1e-9);
+  }
+  EXPECT_LT(nearest_true, 1e-9);
+  // Different rotations: none listed twice.
+  for (std::size_t i = 0; i < run.out.branches.size(); ++i)
+    for (std::size_t j = i + 1; j < run.out.branches.size(); ++j)
+      EXPECT_GT(rotationDistance(run.out.branches[i].manifold->pose(Params{}).linear(),
+                                 run.out.branches[j].manifold->pose(Params{}).linear()),
+                1e-6);
+}
+
+TEST(SeparableMatcher, TwoParallelismsAtDifferentAnglesAreInconsistent) {
+  ConstraintSet set;
+  // Mobile vectors 90° apart, fixed ones 45° apart: no rotation takes one pair onto the other.
+  set.add(Fundamental::angle(Vector3d::UnitX(), Vector3d::UnitX(), 0.0, 1));
+  set.add(Fundamental::angle(Vector3d::UnitY(), Vector3d(1, 1, 0).normalized(), 0.0, 4));
+  MatchRun run = match(set);
+  EXPECT_EQ(run.result, MatchResult::kInconsistent);
+  EXPECT_EQ(run.conflict, SourceMask{5});
+  EXPECT_TRUE(run.out.branches.empty());
+}
+
+TEST(SeparableMatcher, TwoAnglesNoRotationMeetsAreInconsistent) {
+  ConstraintSet set;
+  // R z within 0.1 rad of z leaves R x within 0.1 of horizontal: at least 1.1 rad from a fixed
+  // vector 0.3 rad from z, never 0.2 from it.
+  const Vector3d w(0.0, std::sin(0.3), std::cos(0.3));
+  set.add(Fundamental::angle(Vector3d::UnitZ(), Vector3d::UnitZ(), 0.1, 1));
+  set.add(Fundamental::angle(Vector3d::UnitX(), w, 0.2, 2));
+  MatchRun run = match(set);
+  EXPECT_EQ(run.result, MatchResult::kInconsistent);
+  EXPECT_EQ(run.conflict, SourceMask{3});
+}
+
+TEST(SeparableMatcher, AFixedRotationWithALineDistanceIsDeferred) {
+  Rng rng(3);
+  const Matrix3d R = axisAngle(rng.unit(), 0.8);
+  ConstraintSet set;
+  set.add(Fundamental::angle(Vector3d::UnitX(), R.col(0), 0.0, 1));
+  set.add(Fundamental::angle(Vector3d::UnitY(), R.col(1), 0.0, 2));
+  // A line-line distance is mixed until the rotation fixes the mobile line's direction.
+  set.add(Fundamental::lineLine(rng.point(), rng.unit(), rng.point(), rng.unit(), 0.5, 0.5, 4));
+  EXPECT_EQ(match(set).result, MatchResult::kNoMatch);  // no deferral offered: left to others
+  MatchRun run = match(set, true);
+  ASSERT_EQ(run.result, MatchResult::kDeferred);
+  EXPECT_TRUE(run.out.branches.empty());
+  EXPECT_EQ(run.deferred.size(), 2u);  // the two sides of the distance (derived_sets_test.cpp)
+}
+
+TEST(SeparableMatcher, APluginKindIsLeftToThePlugin) {
+  ConstraintSet set;
+  Fundamental f = Fundamental::pointPoint(Vector3d::Zero(), Vector3d::Zero(), 0.0, 1);
+  f.kind = FundamentalKind::kCustom;
+  set.add(f);
+  EXPECT_EQ(match(set).result, MatchResult::kNoMatch);
+}
+
+TEST(SeparableMatcher, AnEmptySetIsEveryPose) {
+  MatchRun run = match(ConstraintSet{});
+  ASSERT_EQ(run.result, MatchResult::kMatched);
+  ASSERT_EQ(run.out.branches.size(), 1u);
+  EXPECT_EQ(run.out.branches[0].manifold->describe(), "rotation Free, translation R3");
+  EXPECT_EQ(run.out.branches[0].manifold->dof(), 6);
+}
+
+}  // namespace
+}  // namespace relpos::test

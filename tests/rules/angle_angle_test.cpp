@@ -1,0 +1,73 @@
+// angle+angle (rules/src/angle_angle.cpp, PMF App. IV Table X) on the rows data/rules has no spec
+// for, with answers from the geometry: a vector at 60° from both x and y lies along
+// (1/2, 1/2, ±1/√2); a rotation keeping x fixed that puts y at 30° from (0, 1, 1)/√2 turns by 15°
+// or 75° about x.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rule_kit.hpp"
+
+namespace relpos::test {
+namespace {
+
+const double kDeg = std::acos(-1.0) / 180.0;
+
+Problem oneVectorTwoAngles(double alpha, double beta) {
+  Problem p;
+  p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addFixedFeature("Y", Feature::makeLine({0, 0, 0}, {0, 1, 0}))
+      .addMobileFeature("l", Feature::makeLine({0, 0, 0}, {1, 0, 0}));
+  p.addConstraint("angle", "X", "l", alpha).addConstraint("angle", "Y", "l", beta);
+  return p;
+}
+
+// The rotation taking x to d (about x × d).
+Isometry3d turningXTo(const Vector3d& d) {
+  const Vector3d axis = Vector3d::UnitX().cross(d);
+  return poseOf({0.2, -1, 3}, std::acos(d.normalized().x()), axis);
+}
+
+TEST(AngleAngle, OneVectorAtTwoAnglesLiesOnTheConesMeeting) {
+  const Problem p = oneVectorTwoAngles(60 * kDeg, 60 * kDeg);
+  std::string fired;
+  const RuleOutput out = applyRule("angle+angle", p, &fired);
+  EXPECT_EQ(fired, "angle+angle/two-cones");
+  ASSERT_EQ(out.alternatives.size(), 2u);
+  for (double z : {1.0, -1.0}) {
+    const Isometry3d X = turningXTo(Vector3d(0.5, 0.5, z * std::sqrt(0.5)));
+    ASSERT_TRUE(satisfiesInputs(p, X));
+    EXPECT_TRUE(satisfiesAnAlternative(out, X));
+  }
+  const Isometry3d off = turningXTo(Vector3d(0.5, 0.5, 0.0));
+  EXPECT_FALSE(satisfiesAnAlternative(out, off));
+}
+
+TEST(AngleAngle, ConesThatDoNotMeetAreIncompatible) {
+  std::string fired;
+  const RuleOutput out = applyRule("angle+angle", oneVectorTwoAngles(10 * kDeg, 10 * kDeg), &fired);
+  EXPECT_EQ(fired, "angle+angle/incompatible");
+  EXPECT_EQ(out.verdict, RuleVerdict::kIncompatible);
+}
+
+TEST(AngleAngle, AParallelismAndAnAngleTurnAboutTheParallelAxis) {
+  Problem p;
+  p.addFixedFeature("X", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addFixedFeature("V", Feature::makeLine({0, 0, 0}, Vector3d(0, 1, 1).normalized()))
+      .addMobileFeature("x", Feature::makeLine({0, 0, 0}, {1, 0, 0}))
+      .addMobileFeature("y", Feature::makeLine({0, 0, 0}, {0, 1, 0}));
+  p.addConstraint("parallel", "X", "x").addConstraint("angle", "V", "y", 30 * kDeg);
+  std::string fired;
+  const RuleOutput out = applyRule("angle+angle", p, &fired);
+  EXPECT_EQ(fired, "angle+angle/parallel-and-angle");
+  ASSERT_EQ(out.alternatives.size(), 2u);
+  for (double phi : {15.0, 75.0}) {
+    const Isometry3d X = poseOf({1, 2, 3}, phi * kDeg, Vector3d::UnitX());
+    ASSERT_TRUE(satisfiesInputs(p, X)) << phi;
+    EXPECT_TRUE(satisfiesAnAlternative(out, X)) << phi;
+  }
+  EXPECT_FALSE(satisfiesAnAlternative(out, poseOf({1, 2, 3}, 45 * kDeg, Vector3d::UnitX())));
+}
+
+}  // namespace
+}  // namespace relpos::test
