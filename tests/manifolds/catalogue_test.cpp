@@ -10,12 +10,12 @@
 #include <variant>
 #include <vector>
 
+#include "relpos/builtins/builtins.hpp"
 #include "relpos/manifolds/line_distance.hpp"
 #include "relpos/manifolds/radial_grasp.hpp"
 #include "relpos/manifolds/revolved.hpp"
 #include "relpos/manifolds/rotation_part.hpp"
 #include "relpos/manifolds/translation_part.hpp"
-#include "relpos/rules/builtin.hpp"
 
 namespace relpos::test {
 namespace {

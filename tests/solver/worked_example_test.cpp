@@ -8,7 +8,7 @@
 
 #include "evaluator.hpp"
 #include "relpos/io/spec_reader.hpp"
-#include "relpos/rules/builtin.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 
