@@ -30,7 +30,7 @@ int cmdRuleCoverage(const Args& a, const Registry& reg) {
     }
     ++specs;
     relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
-    for (const char* name : sol.rules) ++count[name];
+    for (const char* name : sol.ruleNames()) ++count[name];
   }
   int never = 0;
   for (const auto& r : reg.rules()) {

@@ -20,7 +20,7 @@ void ConstraintType::checkValues(const InputConstraint& c,
   if (!check) return;
   std::string what;
   try {
-    check(c, problems);
+    check(c, problems, context);
     return;
   } catch (const std::exception& e) {
     what = e.what();
@@ -62,14 +62,23 @@ void Registry::addRule(RuleInfo r, bool replace) {
   checkOpen();
   if (!r.fn) throw std::invalid_argument("rule '" + r.name + "' has no function");
   addNamed(rules_, std::move(r), replace || allow_replace_, "rule", origin_);
-  // Rebuild the dispatch table: cheap, happens only at set-up, keeps registration order.
+  if (rules_.size() > 0xffff) throw std::invalid_argument("more than 65535 rules");
+  // Rebuild the dispatch table and the name table: cheap, happens only at set-up, keeps
+  // registration order. A new name table each time: Solutions may share the previous one.
+  auto names = std::make_shared<RuleNames>();
+  std::vector<std::string> cases;
   for (auto& row : table_)
     for (auto& cell : row) cell.clear();
   for (int i = 0; i < static_cast<int>(rules_.size()); ++i) {
     int a = static_cast<int>(rules_[i].first), b = static_cast<int>(rules_[i].second);
     table_[a][b].push_back({i, false});
     if (a != b) table_[b][a].push_back({i, true});
+    cases.clear();
+    for (int k = 0; k < static_cast<int>(rules_[i].cases.size()); ++k)
+      cases.push_back(rules_[i].firedName(k));
+    names->addRule(rules_[i].firedName(-1), cases);
   }
+  rule_names_ = std::move(names);
 }
 
 void Registry::addManifold(ManifoldInfo m, bool replace) {
@@ -80,6 +89,7 @@ void Registry::addManifold(ManifoldInfo m, bool replace) {
 void Registry::addMatcher(MatcherInfo m, bool replace) {
   checkOpen();
   if (!m.fn) throw std::invalid_argument("matcher '" + m.name + "' has no function");
+  m.library = origin_.empty() ? nullptr : origin_library_;
   addNamed(matchers_, std::move(m), replace || allow_replace_, "matcher", origin_);
 }
 
@@ -107,11 +117,13 @@ const CustomKindInfo* Registry::customKind(const std::string& name) const {
 
 void Registry::setOrigin(std::string origin, bool allow_replace) {
   origin_ = std::move(origin);
+  origin_library_ = libraryPath(origin_);
   allow_replace_ = allow_replace;
 }
 
 void Registry::clearOrigin() {
   origin_.clear();
+  origin_library_ = nullptr;
   allow_replace_ = false;
 }
 

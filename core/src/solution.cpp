@@ -49,10 +49,11 @@ void Solution::clear() {
   solve_us = 0.0;
 }
 
-void Solution::noteRule(const char* name) {
-  for (const char* r : rules)
-    if (r == name || std::strcmp(r, name) == 0) return;
-  rules.push_back(name);
+void Solution::noteRule(RuleCaseId id) {
+  const char* name = rule_names->name(id);
+  for (const RuleCaseId& r : rules)
+    if (r == id || std::strcmp(rule_names->name(r), name) == 0) return;
+  rules.push_back(id);
 }
 
 Solution unhandledAfterThrow(const Solution& solution, const char* during,
@@ -66,6 +67,7 @@ Solution unhandledAfterThrow(const Solution& solution, const char* during,
   out.message = plugins.empty()
                     ? std::string("internal error while ") + during + ": " + what
                     : "a manifold of plugin " + plugins + " threw while " + during + ": " + what;
+  out.rule_names = solution.rule_names;
   out.rules = solution.rules;
   out.solve_us = solution.solve_us;
   return out;

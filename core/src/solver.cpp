@@ -7,6 +7,7 @@
 #include <string>
 
 #include "centring.hpp"
+#include "relpos/core/branch_sink.hpp"
 
 namespace relpos {
 
@@ -116,6 +117,12 @@ std::string derivedErrText(const RuleOutput& out) {
   return buf;
 }
 
+// Which case of rule `index` fired (-1, the rule itself, for a `fired` that names no case).
+RuleCaseId caseId(int index, const RuleInfo& rule, int fired) {
+  const bool is_case = fired >= 0 && fired < static_cast<int>(rule.cases.size());
+  return {static_cast<std::uint16_t>(index), static_cast<std::int16_t>(is_case ? fired : -1)};
+}
+
 // Rewrites one list (C_T or C_R) of `set` pairwise until no rule applies. Alternatives other than
 // the first are pushed onto the workspace's pending stack.
 SetOutcome combineList(SolveState& st, std::size_t set_index, bool translational, int& steps) {
@@ -157,7 +164,7 @@ restart:
                                "the problem within the tolerance");
           return SetOutcome::kUnhandled;
         }
-        st.solution.noteRule(rule.firedName(out.fired).c_str());
+        st.solution.noteRule(caseId(entry.rule, rule, out.fired));
         if (++steps > st.options.max_rule_steps) {
           setUnhandled(st, "the combination rules did not settle within " +
                                std::to_string(st.options.max_rule_steps) + " steps");
@@ -269,7 +276,8 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     if (type->check) {
       st.ws.problems.clear();
       if (!guarded(
-              st, [&] { type->check(c, st.ws.problems); }, [&] { return typeItem("value check"); }))
+              st, [&] { type->check(c, st.ws.problems, type->context); },
+              [&] { return typeItem("value check"); }))
         return;
       if (!st.ws.problems.empty()) {
         setUnhandled(st, "constraint " + std::to_string(i) + " is invalid: " + st.ws.problems[0]);
@@ -280,7 +288,7 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     dec.unhandled = nullptr;
     Feature fixed_W = c.fixed.placed(problem.fixed.pose);
     if (!guarded(
-            st, [&] { type->decompose(c, fixed_W, SourceMask{1} << i, dec); },
+            st, [&] { type->decompose(c, fixed_W, SourceMask{1} << i, dec, type->context); },
             [&] { return typeItem("decomposition"); }))
       return;
     if (dec.unhandled) {
@@ -304,17 +312,6 @@ void decomposeAll(const Problem& problem, SolveState& st) {
     for (std::size_t s = 0; s < n; ++s)
       for (const Fundamental& f : dec.alternatives[0]) pending[s].add(f);
   }
-}
-
-bool deferSet(void* state, const ConstraintSet& derived) {
-  SolveState& st = *static_cast<SolveState*>(state);
-  // The capacity check keeps the set a matcher is reading from valid (no reallocation).
-  if (static_cast<int>(st.ws.pending.size()) >= st.options.max_branches ||
-      st.ws.pending.size() == st.ws.pending.capacity())
-    return false;
-  st.ws.pending.push_back(derived);
-  st.ws.pending.back().tested.clear();
-  return true;
 }
 
 // Branches matched from a `revolve` set describe X' of X = Rot(line, φ) X': unless the matcher
@@ -357,10 +354,9 @@ std::string unusable(const ManifoldHolder& holder, const char*& type, const char
 // methods throw later. Built-in matchers' branches are left alone.
 bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t first) {
   if (matcher.origin == "built-in") return true;
-  const char* origin = st.registry.libraryPath(matcher.origin);
   for (std::size_t b = first; b < st.solution.branches.size(); ++b) {
     Branch& branch = st.solution.branches[b];
-    branch.origin = origin;
+    branch.origin = matcher.library;
     const char* type = "?";
     const char* call = "";
     std::string problem;
@@ -378,6 +374,12 @@ bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t
     }
   }
   return true;
+}
+
+bool hasCustomKind(const ConstraintSet& set) {
+  for (const Fundamental& f : set.translational)  // (a custom kind is translational)
+    if (f.kind == FundamentalKind::kCustom) return true;
+  return false;
 }
 
 void listBits(SourceMask m, std::vector<int>& out) {
@@ -414,11 +416,16 @@ void runPending(SolveState& st) {
     const ConstraintSet& set = ws.pending[s];
     const std::size_t before = solution.branches.size();
     MatchResult r = MatchResult::kNoMatch;
+    // A plugin's kind is for the plugin's matchers only: a built-in one never solves a set while
+    // ignoring one.
+    const bool custom = hasCustomKind(set);
+    BranchSink sink(solution.branches, st.options.max_branches, &ws.pending);
     for (const MatcherInfo& m : st.registry.matchers()) {
-      MatchContext ctx{set, st.tol, solution, &deferSet, &st};
+      if (custom && m.origin == "built-in") continue;
+      MatchContext ctx{set, st.tol, sink};
       const std::size_t had = solution.branches.size();
       if (!guarded(
-              st, [&] { r = m.fn(ctx); },
+              st, [&] { r = m.fn(ctx, m.context); },
               [&] { return "matcher '" + m.name + "'" + originNote(m.origin); }))
         break;
       // Whatever it answered: a branch left behind by a matcher that passed is used all the same.
@@ -479,6 +486,7 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
                bool centre, Workspace& ws, Solution& solution, Tolerance& tol) {
   prepare(options, ws, solution);
   solution.libraries = registry.loadedLibraries();
+  solution.rule_names = registry.ruleNames();
   SolveState st{registry, options, Tolerance(), ws, solution, 0, "", std::string(), false};
   std::string why;
   detail::Centring frame;
@@ -549,7 +557,8 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
       const ConstraintType* type = checks[i].type;
       if (!type || !type->violation) continue;
       const InputConstraint& c = problem.constraints[i];
-      const double v = type->violation(c, checks[i].fixed_W, c.mobile.placed(X), tol);
+      const double v =
+          type->violation(c, checks[i].fixed_W, c.mobile.placed(X), tol, type->context);
       if (!(v <= worst)) worst = v, which = i;
     }
     if (worst <= kBreakdown) continue;
@@ -587,6 +596,7 @@ void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Re
                         const SolverOptions& options, Workspace& ws, Solution& solution) {
   prepare(options, ws, solution);
   solution.libraries = registry.loadedLibraries();
+  solution.rule_names = registry.ruleNames();
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
   ws.pending.clear();
   ws.pending.push_back(set);

@@ -321,7 +321,7 @@ void writeReport(const Report& r, ResultFormat format, std::string& out) {
   w.key("redundant");
   w.list(r.redundant.size(), [&](std::size_t i) { w.integer(r.redundant[i]); });
   w.key("rules");
-  w.list(r.rules.size(), [&](std::size_t i) { w.string(r.rules[i]); });
+  w.list(r.rules.size(), [&](std::size_t i) { w.string(r.ruleName(i)); });
   w.key("stats");
   w.beginObject();
   w.key("solve_us");

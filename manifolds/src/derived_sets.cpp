@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "relpos/core/branch_sink.hpp"
+
 namespace relpos::manifolds::detail {
 namespace {
 
@@ -143,7 +145,7 @@ bool revolveLine(const ConstraintSet& set, const Vector3d& a, const Tolerance& t
 }  // namespace
 
 MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
-  if (!ctx.defer || anchored(ctx.set)) return MatchResult::kNoMatch;
+  if (!ctx.branches.canDefer() || anchored(ctx.set)) return MatchResult::kNoMatch;
   for (int k = 0; k < rots.size(); ++k)
     if (!rots.parts[k].is<rotation::Fixed>()) return MatchResult::kNoMatch;
   const auto& ts = ctx.set.translational;
@@ -158,7 +160,7 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
     for (std::size_t i = 0; i < ts.size(); ++i) {
       n_shapes[i] = shapesOf(ts[i], R, ctx.tol, shapes[i]);
       combos *= n_shapes[i];
-      if (combos > 64) return MatchResult::kOverflow;
+      if (combos > static_cast<int>(ctx.branches.maxBranches())) return MatchResult::kOverflow;
     }
     for (int combo = 0; combo < combos; ++combo) {
       startDerived(ctx.set, R, rots.err[k], lever, derived);
@@ -166,14 +168,14 @@ MatchResult reanchorForEachRotation(MatchContext& ctx, const RotationAlternative
         derived.add(shapes[i][rest % n_shapes[i]]);
         rest /= n_shapes[i];
       }
-      if (!ctx.defer(ctx.solver, derived)) return MatchResult::kOverflow;
+      if (!ctx.branches.defer(derived)) return MatchResult::kOverflow;
     }
   }
   return MatchResult::kDeferred;
 }
 
 MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives& rots) {
-  if (!ctx.defer || ctx.set.revolve || rots.size() == 0) return MatchResult::kNoMatch;
+  if (!ctx.branches.canDefer() || ctx.set.revolve || rots.size() == 0) return MatchResult::kNoMatch;
   Vector3d c[kMaxRotations];
   for (int k = 0; k < rots.size(); ++k) {
     const auto* spin = rots.parts[k].as<rotation::OneParallel>();
@@ -188,7 +190,7 @@ MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives
     derived.revolve_point = c[k];
     derived.revolve_axis = spin.u_f;
     for (const auto& f : ctx.set.translational) derived.add(f);
-    if (!ctx.defer(ctx.solver, derived)) return MatchResult::kOverflow;
+    if (!ctx.branches.defer(derived)) return MatchResult::kOverflow;
   }
   return MatchResult::kDeferred;
 }

@@ -4,6 +4,7 @@
 // matcher, which derives their inner fixed-rotation sets.)
 #include <utility>
 
+#include "relpos/core/branch_sink.hpp"
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
 #include "relpos/manifolds/catalogue.hpp"
@@ -64,24 +65,18 @@ bool radialGrasp(const ConstraintSet& set, const Tolerance& tol, RadialGraspSpec
   return true;
 }
 
-MatchResult matchMixed(MatchContext& ctx) {
+MatchResult matchMixed(MatchContext& ctx, const void* /*context*/) {
   if (ctx.set.revolve) return MatchResult::kNoMatch;  // only separable branches can be revolved
-  for (const auto& f : ctx.set.translational)
-    if (f.kind == FundamentalKind::kCustom) return MatchResult::kNoMatch;  // a plugin's kind
   const auto& ts = ctx.set.translational;
   if (ctx.set.rotational.empty() && ts.size() == 1 && ts[0].kind == FundamentalKind::kLineLine) {
-    if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
-    ctx.out.branches.emplace_back();
-    ctx.out.branches.back().manifold.emplace<LineDistanceManifold>(ts[0]);
+    if (!ctx.branches.add<LineDistanceManifold>(ts[0])) return MatchResult::kOverflow;
     return MatchResult::kMatched;
   }
   RadialGraspSpec spec;
   if (radialGrasp(ctx.set, ctx.tol, &spec)) {
     for (double sigma : {1.0, -1.0}) {
-      if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
       spec.sigma = sigma;
-      ctx.out.branches.emplace_back();
-      ctx.out.branches.back().manifold.emplace<RadialGraspManifold>(spec);
+      if (!ctx.branches.add<RadialGraspManifold>(spec)) return MatchResult::kOverflow;
     }
     return MatchResult::kMatched;
   }

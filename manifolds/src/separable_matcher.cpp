@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "derived_sets.hpp"
+#include "relpos/core/branch_sink.hpp"
 #include "relpos/core/solution.hpp"
 #include "relpos/manifolds/builtin.hpp"
 #include "relpos/manifolds/catalogue.hpp"
@@ -510,9 +511,7 @@ bool hasKind(const ConstraintSet& set, FundamentalKind kind) {
   return false;
 }
 
-MatchResult matchSeparable(MatchContext& ctx) {
-  // A plugin's kind is for the plugin's matchers only: never solve a set while ignoring one.
-  if (hasKind(ctx.set, FundamentalKind::kCustom)) return MatchResult::kNoMatch;
+MatchResult matchSeparable(MatchContext& ctx, const void* /*context*/) {
   if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
@@ -533,14 +532,12 @@ MatchResult matchSeparable(MatchContext& ctx) {
   }
   for (int k = 0; k < rots.size(); ++k) {
     if (ctx.set.revolve && !rots.parts[k].is<rotation::Fixed>()) return MatchResult::kNoMatch;
-    if (ctx.out.branches.size() >= 64) return MatchResult::kOverflow;
-    ctx.out.branches.emplace_back();
-    ManifoldHolder& m = ctx.out.branches.back().manifold;
-    if (ctx.set.revolve)
-      m.emplace<RevolvedManifold>(ctx.set.revolve_point, ctx.set.revolve_axis,
-                                  SeparableManifold(rots.parts[k], trans));
-    else
-      m.emplace<SeparableManifold>(rots.parts[k], trans);
+    const bool added =
+        ctx.set.revolve
+            ? ctx.branches.add<RevolvedManifold>(ctx.set.revolve_point, ctx.set.revolve_axis,
+                                                 SeparableManifold(rots.parts[k], trans))
+            : ctx.branches.add<SeparableManifold>(rots.parts[k], trans);
+    if (!added) return MatchResult::kOverflow;
   }
   return MatchResult::kMatched;
 }

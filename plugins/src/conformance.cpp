@@ -26,7 +26,8 @@ std::string poseText(const Isometry3d& X) {
 double fundamentalResidual(const Fundamental& f, const Isometry3d& X, const Registry* registry) {
   if (f.kind == FundamentalKind::kCustom) {
     if (!registry || f.custom >= registry->customKinds().size()) return HUGE_VAL;
-    return registry->customKinds()[f.custom].residual(f, X);
+    const CustomKindInfo& kind = registry->customKinds()[f.custom];
+    return kind.residual(f, X, kind.context);
   }
   const Matrix3d R = X.linear();
   const Vector3d T = X.translation();
@@ -63,31 +64,35 @@ double fundamentalResidual(const Fundamental& f, const Isometry3d& X, const Regi
   return x < f.lo ? f.lo - x : (x > f.hi ? x - f.hi : 0.0);
 }
 
+// The solver's sampler (what `samples` in a result draws), about parameters 0.
 Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window) {
-  Params t{};
-  for (int i = 0; i < m.dof(); ++i) {
-    const Parameter p = m.parameter(i);
-    const double lo = std::isfinite(p.min) ? p.min : -window;
-    const double hi = std::isfinite(p.max) ? p.max : window;
-    t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
-  }
-  return t;
+  return sampleParameters(m, Params{}, window, rng);
 }
 
+namespace {
+// "[INVARIANT] WHO: WHAT": a failure named by the invariant that broke.
+std::string failure(const char* invariant, const std::string& who, const std::string& what) {
+  return std::string("[") + invariant + "] " + who + ": " + what;
+}
+}  // namespace
+
 void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int samples) {
-  auto fail = [&](const std::string& what) {
-    report.failures.push_back(m.describe() + ": " + what);
+  auto fail = [&](const char* invariant, const std::string& what) {
+    report.failures.push_back(failure(invariant, m.describe(), what));
   };
   std::mt19937_64 rng(seed);
   if (m.dof() < 0 || m.dof() > kMaxDof)
-    return fail("dof " + std::to_string(m.dof()) + " out of range");
+    return fail("dof-in-range", "dof " + std::to_string(m.dof()) + " out of range");
   if (m.rotationalDof() >= 0 && m.rotationalDof() + m.translationalDof() != m.dof())
-    fail("rotational + translational DOF differ from dof");
+    fail("dof-split", "rotational + translational DOF differ from dof");
   for (int i = 0; i < m.dof(); ++i) {
     const Parameter p = m.parameter(i);
-    if (std::string(p.name).empty()) fail("parameter " + std::to_string(i) + " has no name");
-    if (!(p.min <= p.max)) fail(std::string("parameter ") + p.name + " has min > max");
-    if (p.periodic && p.kind != ParamKind::kAngle) fail(std::string(p.name) + ": periodic length");
+    if (std::string(p.name).empty())
+      fail("parameter-named", "parameter " + std::to_string(i) + " has no name");
+    if (!(p.min <= p.max))
+      fail("parameter-bounds", std::string("parameter ") + p.name + " has min > max");
+    if (p.periodic && p.kind != ParamKind::kAngle)
+      fail("periodic-is-angle", std::string(p.name) + ": periodic length");
   }
   const Tolerance tol = Tolerance::forScale(10.0);
   for (int k = 0; k < samples; ++k, ++report.checked) {
@@ -96,23 +101,25 @@ void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int sa
     const Matrix3d R = X.linear();
     if ((R.transpose() * R - Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-12 ||
         std::abs(R.determinant() - 1.0) > 1e-12)
-      return fail("pose is not a rigid motion at sample " + std::to_string(k));
+      return fail("pose-rigid", "pose is not a rigid motion at sample " + std::to_string(k));
     const Params back = m.project(X);
     for (int i = 0; i < m.dof(); ++i) {
       const Parameter p = m.parameter(i);
       if (!p.periodic && (back[i] < p.min - 1e-9 || back[i] > p.max + 1e-9))
-        fail(std::string("project leaves the bounds of ") + p.name + " at " + poseText(X));
+        fail("project-in-bounds",
+             std::string("project leaves the bounds of ") + p.name + " at " + poseText(X));
     }
     if (poseDistance(m.pose(back), X) > 1e-7)
-      fail("project does not return a pose on the manifold: " + poseText(X));
-    if (!m.contains(X, tol)) fail("contains() is false on the manifold: " + poseText(X));
+      fail("params-round-trip", "project does not return a pose on the manifold: " + poseText(X));
+    if (!m.contains(X, tol))
+      fail("contains-on-manifold", "contains() is false on the manifold: " + poseText(X));
     // Off the manifold: nearest is never worse than the projection.
     Isometry3d Y = X;
     Y.translation() += Vector3d(0.3, -0.2, 0.4);
     Y.linear() = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()) * Y.linear();
     const Params n = nearestParams(m, Y);
     if (poseDistance(m.pose(n), Y) > poseDistance(m.pose(m.project(Y)), Y) + 1e-12)
-      fail("nearest is worse than the projection from " + poseText(Y));
+      fail("nearest-not-farther", "nearest is worse than the projection from " + poseText(Y));
   }
 }
 
@@ -146,16 +153,20 @@ void checkRule(const Registry& registry, const RuleInfo& rule, const Fundamental
   RuleOutput out;
   rule.fn(a, b, tol, out, rule.context);
   const std::string name = rule.firedName(out.fired);
-  auto fail = [&](const std::string& what) { report.failures.push_back(name + ": " + what); };
+  auto fail = [&](const char* invariant, const std::string& what) {
+    report.failures.push_back(failure(invariant, name, what));
+  };
   if (out.verdict != RuleVerdict::kNoChange && !rule.cases.empty() && out.fired < 0)
-    fail("fired without naming its case");
+    fail("case-named", "fired without naming its case");
   if (out.verdict == RuleVerdict::kIncompatible && known)
-    return fail(std::string("declared a satisfiable pair incompatible: ") + out.reason);
+    return fail("satisfiable-not-incompatible",
+                std::string("declared a satisfiable pair incompatible: ") + out.reason);
   std::string bad;
   if (out.verdict == RuleVerdict::kRedundantFirst || out.verdict == RuleVerdict::kRedundantSecond) {
     const Fundamental& kept = out.verdict == RuleVerdict::kRedundantFirst ? b : a;
     if (outputImpliesInputs(registry, {kept}, a, b, tol, rng, &bad)) ++report.checked;
-    if (!bad.empty()) fail("dropped a constraint its partner does not imply: " + bad);
+    if (!bad.empty())
+      fail("redundant-is-implied", "dropped a constraint its partner does not imply: " + bad);
     return;
   }
   if (out.verdict != RuleVerdict::kReplace) return;
@@ -164,13 +175,16 @@ void checkRule(const Registry& registry, const RuleInfo& rule, const Fundamental
     std::vector<Fundamental> fs(alt.begin(), alt.end());
     bad.clear();
     if (outputImpliesInputs(registry, fs, a, b, tol, rng, &bad)) ++report.checked;
-    if (!bad.empty()) fail("a replacement set admits a pose violating the pair: " + bad);
+    if (!bad.empty())
+      fail("replacement-implies-pair",
+           "a replacement set admits a pose violating the pair: " + bad);
     if (!known) continue;
     bool all = true;
     for (const Fundamental& f : alt) all = all && fundamentalResidual(f, *known, &registry) < 1e-6;
     some = some || all;
   }
-  if (known && !some) fail("the known pose satisfies no replacement set: " + poseText(*known));
+  if (known && !some)
+    fail("known-pose-kept", "the known pose satisfies no replacement set: " + poseText(*known));
 }
 
 }  // namespace relpos::plugins

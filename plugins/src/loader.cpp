@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <memory>
@@ -59,8 +60,20 @@ std::string notAFile(const std::string& path) {
   return "not a regular file";
 }
 
+// "6 (layout 0x1a2b3c4d5e6f)": the version and the fingerprint of the shared layouts.
 std::string abiText(long abi) {
-  return std::to_string(abi / 1000000) + "." + std::to_string(abi % 1000000);
+  char layout[32];
+  std::snprintf(layout, sizeof layout, "%#lx", pluginAbiFingerprintOf(abi));
+  return std::to_string(pluginAbiVersionOf(abi)) + " (layout " + layout + ")";
+}
+
+// Why a plugin answering `abi` is refused.
+std::string abiMismatch(long abi) {
+  const bool same_version = pluginAbiVersionOf(abi) == kPluginAbiVersion;
+  return "built for relpos plugin ABI " + abiText(abi) + ", this relpos has " +
+         abiText(pluginAbi()) +
+         (same_version ? ": the same version built from headers with other shared layouts" : "") +
+         " (rebuild the plugin against this relpos)";
 }
 
 }  // namespace
@@ -93,16 +106,14 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
   } catch (...) {  // not one RELPOS_PLUGIN made: its ABI query is noexcept
     return fail(path, "not a relpos plugin: its relpos_plugin_abi threw", error);
   }
-  if (abi != pluginAbi())
-    return fail(path,
-                "built for relpos plugin ABI " + abiText(abi) + ", this relpos has " +
-                    abiText(pluginAbi()) + " (rebuild the plugin against this relpos)",
-                error);
+  if (abi != pluginAbi()) return fail(path, abiMismatch(abi), error);
 
-  // Registration is all or nothing: on failure the registry goes back to this copy.
+  // Registration is all or nothing: on failure the registry goes back to this copy. The library
+  // is kept first, so that the items it registers can record it (MatcherInfo::library).
   Registry before = registry;
   const char* failure = nullptr;
   std::string thrown;
+  registry.keepLoaded(id, std::shared_ptr<const void>(lib, lib.get()));
   registry.setOrigin(id, options.allow_override);
   try {
     failure = lib->get_alias<PluginRegisterFn>("relpos_register_plugin")(registry);
@@ -121,7 +132,6 @@ bool loadPlugin(const std::string& path, Registry& registry, std::string* error,
                     (clash ? " (pass --allow-override to let the plugin replace it)" : ""),
                 error);
   }
-  registry.keepLoaded(id, std::shared_ptr<const void>(lib, lib.get()));
   return true;
 }
 

@@ -33,6 +33,7 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
   r.conflicts.assign(solution.conflicts.begin(), solution.conflicts.end());
   r.redundant.assign(solution.redundant.begin(), solution.redundant.end());
   r.rules.assign(solution.rules.begin(), solution.rules.end());
+  r.rule_names = solution.rule_names;
   r.solve_us = solution.solve_us;
   r.collision_checked = false;
   r.collision.clear();

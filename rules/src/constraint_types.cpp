@@ -86,8 +86,8 @@ void applyRange(const InputConstraint& c, Decomposition& out) {
     }
 }
 
-void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s,
-                       Decomposition& out) {
+void decomposeDistance(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out,
+                       const void* /*context*/) {
   const bool range = isProperRange(c);
   if (F.kind == K::kLine && c.mobile.kind == K::kLine && !c.parallel) {
     // Somani's mixed constraint: the skew distance between the lines, no parallelism required.
@@ -121,7 +121,8 @@ void decomposeDistanceValue(const InputConstraint& c, const Feature& F, SourceMa
   pair(out, onOffsetPlane(F, M, v, s), Fundamental::angle(u_m, u_f, kPi / 2, s));
 }
 
-void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out) {
+void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out,
+                    const void* /*context*/) {
   const bool line_plane = F.kind != c.mobile.kind;
   // Table I: ∠(L, Π) = α -> ∠(d, n) = π/2 − α; the others compare directions directly. A range
   // maps the same way (Somani Table III: OneAngleMinMax), clamped to [0, π].
@@ -138,7 +139,7 @@ void decomposeAngle(const InputConstraint& c, const Feature& F, SourceMask s, De
 }
 
 void decomposeCoincident(const InputConstraint& c, const Feature& F, SourceMask s,
-                         Decomposition& out) {
+                         Decomposition& out, const void* /*context*/) {
   const Feature& M = c.mobile;
   if (isPointKind(F.kind) || isPointKind(M.kind)) {
     const Feature& X = isPointKind(M.kind) ? F : M;
@@ -156,22 +157,22 @@ void decomposeCoincident(const InputConstraint& c, const Feature& F, SourceMask 
   pair(out, onOffsetPlane(F, M, 0.0, s), Fundamental::angle(M.direction, F.direction, kPi / 2, s));
 }
 
-void decomposeParallel(const InputConstraint& c, const Feature& F, SourceMask s,
-                       Decomposition& out) {
+void decomposeParallel(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out,
+                       const void* /*context*/) {
   if (F.kind != c.mobile.kind)  // line ∥ plane: d ⊥ n
     return single(out, Fundamental::angle(c.mobile.direction, F.direction, kPi / 2, s));
   parallelAlternatives(c.orientation, c.mobile.direction, F.direction, s, nullptr, out);
 }
 
 void decomposePerpendicular(const InputConstraint& c, const Feature& F, SourceMask s,
-                            Decomposition& out) {
+                            Decomposition& out, const void* /*context*/) {
   if (F.kind != c.mobile.kind)  // line ⊥ plane: d ∥ n per orientation
     return parallelAlternatives(c.orientation, c.mobile.direction, F.direction, s, nullptr, out);
   single(out, Fundamental::angle(c.mobile.direction, F.direction, kPi / 2, s));
 }
 
-void decomposeTangent(const InputConstraint& c, const Feature& F, SourceMask s,
-                      Decomposition& out) {
+void decomposeTangent(const InputConstraint& c, const Feature& F, SourceMask s, Decomposition& out,
+                      const void* /*context*/) {
   const Feature& M = c.mobile;
   if (F.kind == K::kCylinder && M.kind == K::kCylinder) {
     // Axes parallel either way, at distance r1 + r2.
@@ -206,7 +207,8 @@ bool signedDistance(const InputConstraint& c) {
   return c.fixed.kind == K::kPlane || c.mobile.kind == K::kPlane;
 }
 
-void checkDistance(const InputConstraint& c, std::vector<std::string>& problems) {
+void checkDistance(const InputConstraint& c, std::vector<std::string>& problems,
+                   const void* /*context*/) {
   checkFinite(c, problems);
   if (signedDistance(c)) return;
   auto neg = [&](const char* field, double v) {
@@ -219,7 +221,8 @@ void checkDistance(const InputConstraint& c, std::vector<std::string>& problems)
   if (!c.has_value && std::isfinite(c.max)) neg("max", c.max);
 }
 
-void checkAngle(const InputConstraint& c, std::vector<std::string>& problems) {
+void checkAngle(const InputConstraint& c, std::vector<std::string>& problems,
+                const void* /*context*/) {
   checkFinite(c, problems);
   const bool line_plane = c.fixed.kind != c.mobile.kind;
   const double lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;

@@ -132,21 +132,21 @@ void tangent(const InputConstraint& c, const Feature& F, const Feature& M, Worst
 }  // namespace
 
 double distanceViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                         const Tolerance& tol) {
+                         const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   distanceLike(c, F, M, false, w);
   return w.v;
 }
 
 double coincidentViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                           const Tolerance& tol) {
+                           const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   distanceLike(c, F, M, true, w);
   return w.v;
 }
 
 double angleViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                      const Tolerance& tol) {
+                      const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   angle(c, F, M, w);
   return w.v;
@@ -154,7 +154,7 @@ double angleViolation(const InputConstraint& c, const Feature& F, const Feature&
 
 // Line-line and plane-plane per orientation; a line parallel to a plane: d·n = 0.
 double parallelViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                         const Tolerance& tol) {
+                         const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   w.angle(F.kind != M.kind ? std::asin(std::min(1.0, std::abs(F.direction.dot(M.direction))))
                            : parallelAngle(M.direction, F.direction, c.orientation));
@@ -163,7 +163,7 @@ double parallelViolation(const InputConstraint& c, const Feature& F, const Featu
 
 // Line-line and plane-plane: d·d = 0; a line perpendicular to a plane: along its normal.
 double perpendicularViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                              const Tolerance& tol) {
+                              const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   w.angle(F.kind != M.kind ? parallelAngle(M.direction, F.direction, c.orientation)
                            : std::asin(std::min(1.0, std::abs(F.direction.dot(M.direction)))));
@@ -171,7 +171,7 @@ double perpendicularViolation(const InputConstraint& c, const Feature& F, const 
 }
 
 double tangentViolation(const InputConstraint& c, const Feature& F, const Feature& M,
-                        const Tolerance& tol) {
+                        const Tolerance& tol, const void* /*context*/) {
   Worst w{tol};
   tangent(c, F, M, w);
   return w.v;

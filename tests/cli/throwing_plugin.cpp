@@ -7,7 +7,7 @@
 namespace throwing_plugin {
 
 void decomposeExplodes(const relpos::InputConstraint&, const relpos::Feature&, relpos::SourceMask,
-                       relpos::Decomposition&) {
+                       relpos::Decomposition&, const void*) {
   throw std::runtime_error("explodes: this decomposition gives up on purpose");
 }
 

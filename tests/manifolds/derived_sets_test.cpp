@@ -10,23 +10,21 @@
 #include "constraint_measure.hpp"
 #include "random_problems.hpp"
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/core/branch_sink.hpp"
 #include "relpos/core/solution.hpp"
 
 namespace relpos::test {
 namespace {
 
-bool collect(void* state, const ConstraintSet& derived) {
-  static_cast<std::vector<ConstraintSet>*>(state)->push_back(derived);
-  return true;
-}
-
 std::vector<ConstraintSet> deferredSets(const ConstraintSet& set, MatchResult* result) {
   std::vector<ConstraintSet> out;
+  out.reserve(64);  // BranchSink::defer never reallocates
   Solution solution;
   const Tolerance tol;
-  MatchContext ctx{set, tol, solution, &collect, &out};
+  BranchSink sink(solution.branches, 64, &out);
+  MatchContext ctx{set, tol, sink};
   for (const MatcherInfo& m : builtinRegistry().matchers())
-    if (m.name == "separable") *result = m.fn(ctx);
+    if (m.name == "separable") *result = m.fn(ctx, m.context);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <link.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,31 @@ TEST(Plugins, LoadingTheSamePathTwiceIsOneLoad) {
   EXPECT_EQ(r.pluginPaths().size(), 1u);
 }
 
+double noResidual(const Fundamental&, const Isometry3d&, const void*) { return 0.0; }
+
+// The helical plugin keeps its kind's index in its callbacks' context, not in a global: two
+// registries in which the kind has different indices both solve a thread, and its branch names
+// the library it comes from (MatcherInfo::library, resolved at registration).
+TEST(Plugins, EachRegistryKeepsItsOwnPluginState) {
+  Registry first;
+  registerBuiltins(first);
+  first.addCustomKind({"taken-first", "moves helical to index 1", &noResidual});
+  std::string error;
+  ASSERT_TRUE(plugins::loadPlugin(kHelical, first, &error)) << error;
+  first.freeze();
+  const Registry second = withPlugins({kHelical});
+  ASSERT_NE(first.customKind("helical") - first.customKinds().data(),
+            second.customKind("helical") - second.customKinds().data());
+  for (const Registry* r : {static_cast<const Registry*>(&first), &second}) {
+    ParseResult pr = parseSpecFile(RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json", *r);
+    ASSERT_TRUE(pr.problem);
+    const Solution s = solve(*pr.problem, *r);
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    ASSERT_NE(s.branches[0].origin, nullptr);
+    EXPECT_EQ(s.branches[0].origin, fs::canonical(kHelical).string());
+  }
+}
+
 // A thread around a known pose: random axis, pitch and turn; the known pose lies on the helix.
 TEST(Plugins, RandomThreadsContainTheKnownPose) {
   Rng rng(77);
@@ -130,7 +156,7 @@ TEST(Plugins, RandomCentredGraspsContainTheKnownPose) {
     ASSERT_LT(worstViolation(p, X), 1e-9);
     Solution s = solve(p, exampleRegistry());
     ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    for (const char* rule : s.rules) {
+    for (const char* rule : s.ruleNames()) {
       annulus += std::string(rule) == "shell-cut:pp+pplane/annulus";
       disc += std::string(rule) == "shell-cut:pp+pplane/disc";
     }
@@ -345,8 +371,66 @@ TEST(BadPlugins, ALibraryWithoutTheEntryPoint) {
 }
 
 TEST(BadPlugins, AWrongAbiVersion) {
-  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so",
-                "built for relpos plugin ABI " + std::to_string(kPluginAbiVersion + 1) + ".");
+  expectRefused(
+      RELPOS_BAD_PLUGIN_DIR "/bad-wrong-abi.so",
+      "built for relpos plugin ABI " + std::to_string(kPluginAbiVersion + 1) + " (layout 0x");
+}
+
+// The same version, other layouts: refused with the version and both fingerprints named.
+TEST(BadPlugins, AWrongLayoutFingerprint) {
+  char mine[32], theirs[32];
+  std::snprintf(mine, sizeof mine, "%#lx", pluginAbiFingerprintOf(pluginAbi()));
+  std::snprintf(theirs, sizeof theirs, "%#lx", pluginAbiFingerprintOf(pluginAbi() ^ 1L));
+  const std::string v = std::to_string(kPluginAbiVersion);
+  expectRefused(RELPOS_BAD_PLUGIN_DIR "/bad-wrong-layout.so",
+                "built for relpos plugin ABI " + v + " (layout " + theirs + "), this relpos has " +
+                    v + " (layout " + mine +
+                    "): the same version built from headers with other shared layouts");
+}
+
+// A slide along x whose project() forgets where it was (always 0): the kit names the invariant.
+class ForgetfulSlide final : public MixedManifoldBase<ForgetfulSlide> {
+ public:
+  const char* typeName() const override { return "ForgetfulSlide"; }
+  int dof() const override { return 1; }
+  Parameter parameter(int) const override { return {"x", ParamKind::kLength, -1.0, 1.0, false}; }
+  Isometry3d pose(const Params& t) const override {
+    Isometry3d X = Isometry3d::Identity();
+    X.translation().x() = t[0];
+    return X;
+  }
+  Params project(const Isometry3d&) const override { return Params{}; }
+  std::string describe() const override { return "forgetful slide"; }
+};
+
+TEST(Conformance, AFailureIsNamedByTheInvariantThatBroke) {
+  plugins::Report report;
+  plugins::checkManifold(ForgetfulSlide(), 3, report, 5);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.failures[0].rfind("[params-round-trip] forgetful slide: ", 0), 0u)
+      << report.text();
+}
+
+// The fingerprint reads layouts and signatures: a callback with one more parameter, or a struct
+// with one more member, is another fingerprint.
+TEST(PluginAbi, TheFingerprintSeesSignaturesAndLayouts) {
+  using Two = void (*)(const Fundamental&, const void*);
+  using Three = void (*)(const Fundamental&, const void*, int);
+  EXPECT_NE(abi::Signature<Two>::value, abi::Signature<Three>::value);
+  using ByValue = void (*)(Fundamental, const void*);
+  EXPECT_NE(abi::Signature<Two>::value, abi::Signature<ByValue>::value);
+  struct A {
+    double x;
+    int y;
+  };
+  struct B {
+    int y;
+    double x;
+  };
+  EXPECT_NE(abi::hash(RELPOS_ABI_MEMBER(A, x), RELPOS_ABI_MEMBER(A, y)),
+            abi::hash(RELPOS_ABI_MEMBER(B, x), RELPOS_ABI_MEMBER(B, y)));
+  EXPECT_EQ(pluginAbiVersionOf(pluginAbi()), kPluginAbiVersion);
+  EXPECT_EQ(pluginAbiVersionOf(5 * 1000000L + 4242), 5);  // an answer of version 5's form
 }
 
 TEST(BadPlugins, APluginThatThrowsWhileRegistering) {

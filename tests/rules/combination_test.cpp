@@ -35,8 +35,9 @@ std::vector<Fundamental> satisfiedFundamentals(const KnownProblem& kp) {
   for (std::size_t i = 0; i < kp.problem.constraints.size(); ++i) {
     const InputConstraint& c = kp.problem.constraints[i];
     Decomposition d;
-    builtinRegistry().constraintType(c.type)->decompose(c, c.fixed.placed(kp.problem.fixed.pose),
-                                                        SourceMask{1} << i, d);
+    const ConstraintType* type = builtinRegistry().constraintType(c.type);
+    type->decompose(c, c.fixed.placed(kp.problem.fixed.pose), SourceMask{1} << i, d,
+                    type->context);
     for (const auto& alt : d.alternatives) {
       bool ok = true;
       for (const Fundamental& f : alt) ok = ok && fundamentalResidual(f, kp.X_WM_star) < 1e-9;
@@ -144,8 +145,8 @@ TEST(RuleProperties, OutputsImplyInputsOnBundledProblems) {
       for (std::size_t i = 0; i < p.constraints.size(); ++i) {
         Decomposition d;
         const InputConstraint& c = p.constraints[i];
-        reg.constraintType(c.type)->decompose(c, c.fixed.placed(p.fixed.pose), SourceMask{1} << i,
-                                              d);
+        const ConstraintType* type = reg.constraintType(c.type);
+        type->decompose(c, c.fixed.placed(p.fixed.pose), SourceMask{1} << i, d, type->context);
         if (!d.alternatives.empty())
           for (const Fundamental& f : d.alternatives[0]) fs.push_back(f);
       }
@@ -197,7 +198,7 @@ TEST(RuleCoverage, EveryRegisteredRuleCaseFiresOnABundledProblem) {
       ParseResult r = parseSpecFile(e.path().string(), builtinRegistry());
       ASSERT_TRUE(r.problem);
       Solution s = solve(*r.problem, builtinRegistry());
-      for (const char* name : s.rules) fired.insert(name);
+      for (const char* name : s.ruleNames()) fired.insert(name);
     }
   }
   for (const std::string& name : allCaseNames())

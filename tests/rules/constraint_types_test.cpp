@@ -24,7 +24,7 @@ Decomposition decompose(const Problem& p, const InputConstraint& c) {
   Decomposition d;
   const ConstraintType* t = builtinRegistry().constraintType(c.type);
   EXPECT_NE(t, nullptr);
-  t->decompose(c, c.fixed.placed(p.fixed.pose), 1, d);
+  t->decompose(c, c.fixed.placed(p.fixed.pose), 1, d, t->context);
   return d;
 }
 

@@ -17,7 +17,7 @@ double registeredViolation(const Problem& p, const Isometry3d& X, const Toleranc
   EXPECT_NE(t, nullptr);
   EXPECT_NE(t->violation, nullptr) << c.type;
   if (!t || !t->violation) return 0.0;
-  return t->violation(c, c.fixed.placed(p.fixed.pose), c.mobile.placed(X), tol);
+  return t->violation(c, c.fixed.placed(p.fixed.pose), c.mobile.placed(X), tol, t->context);
 }
 
 TEST(ConstraintViolation, AgreesWithTheEvaluatorOnEveryKind) {

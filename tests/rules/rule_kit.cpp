@@ -13,8 +13,8 @@ std::vector<Fundamental> fundamentalsOf(const Problem& p) {
   for (std::size_t i = 0; i < p.constraints.size(); ++i) {
     const InputConstraint& c = p.constraints[i];
     Decomposition d;
-    builtinRegistry().constraintType(c.type)->decompose(c, c.fixed.placed(p.fixed.pose),
-                                                        SourceMask{1} << i, d);
+    const ConstraintType* type = builtinRegistry().constraintType(c.type);
+    type->decompose(c, c.fixed.placed(p.fixed.pose), SourceMask{1} << i, d, type->context);
     if (!d.alternatives.empty())
       for (const Fundamental& f : d.alternatives[0]) out.push_back(f);
   }

@@ -41,6 +41,30 @@ int main() {
       relpos::plugins::checkManifold(*b.manifold, ++branches, report);
   }
 
+  // Plugin state lives in the registry (callback contexts, ABI 6): in a second registry where
+  // the helical kind has another index, the thread still solves.
+  {
+    relpos::Registry other;
+    relpos::registerBuiltins(other);
+    other.addCustomKind(
+        {"taken-first", "moves helical to index 1",
+         [](const relpos::Fundamental&, const relpos::Isometry3d&, const void*) { return 0.0; }});
+    std::string error;
+    if (!relpos::plugins::loadPlugin(HELICAL_PLUGIN, other, &error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+    other.freeze();
+    const std::string file = std::string(PLUGIN_SPECS) + "/helical-screw-insertion.json";
+    relpos::ParseResult parsed = relpos::parseSpecFile(file, other);
+    const relpos::Solution s =
+        parsed.problem ? relpos::solve(*parsed.problem, other) : relpos::Solution();
+    if (s.status != relpos::Status::kSolved) {
+      std::fprintf(stderr, "helical in a second registry: %s\n", s.message.c_str());
+      return 1;
+    }
+  }
+
   // The plugin's rule on shell/plane pairs around known poses.
   const relpos::RuleInfo* rule = nullptr;
   for (const auto& r : registry.rules())

@@ -10,6 +10,7 @@
 #include "evaluator.hpp"
 #include "random_problems.hpp"
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/core/branch_sink.hpp"
 #include "relpos/manifolds/separable.hpp"
 #include "solve_helpers.hpp"
 
@@ -21,15 +22,15 @@ namespace {
 Vector3d g_offset = Vector3d::Zero();
 bool g_nan = false;
 
-MatchResult onePoseMatcher(MatchContext& ctx) {
+MatchResult onePoseMatcher(MatchContext& ctx, const void*) {
   const double x = g_nan ? std::numeric_limits<double>::quiet_NaN() : 0.0;
   // T = S_f − R S_m with R = I: the mobile origin goes to the fixed point.
   const manifolds::translation::Point t(
       Fundamental::pointPoint(Vector3d::Zero(), Vector3d(x, 0, 0) + g_offset, 0.0, 1));
-  ctx.out.branches.emplace_back();
-  ctx.out.branches.back().manifold.emplace<manifolds::SeparableManifold>(
-      manifolds::rotation::Fixed(Matrix3d::Identity()), t);
-  return MatchResult::kMatched;
+  return ctx.branches.add<manifolds::SeparableManifold>(
+             manifolds::rotation::Fixed(Matrix3d::Identity()), t)
+             ? MatchResult::kMatched
+             : MatchResult::kOverflow;
 }
 
 Registry registryWithOnePoseMatcherFirst() {
@@ -89,7 +90,7 @@ TEST(BranchCheck, TypesViolationAgreesWithTheTestsEvaluator) {
   Tolerance tol;  // 1e-9 both
   auto mineOf = [&](const ConstraintType* type, const InputConstraint& c, const Feature& F,
                     const Isometry3d& X) {
-    return tol.length * type->violation(c, F, c.mobile.placed(X), tol);
+    return tol.length * type->violation(c, F, c.mobile.placed(X), tol, type->context);
   };
   int violated = 0;
   for (int trial = 0; trial < 400; ++trial) {

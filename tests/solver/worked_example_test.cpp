@@ -2,8 +2,13 @@
 // translational DOF, and at φ = 0 the pose of eq. (17).
 #include <gtest/gtest.h>
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "evaluator.hpp"
 #include "relpos/io/spec_reader.hpp"
+#include "relpos/builtins/builtins.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 
@@ -67,8 +72,27 @@ TEST(WorkedExample, BranchSweepsTheWholeSolutionCircle) {
 TEST(WorkedExample, RulesThatFireAreNamed) {
   Solution s = solve(workedExample(), builtinRegistry());
   ASSERT_GE(s.rules.size(), 2u);
-  EXPECT_STREQ(s.rules[0], "pl+pl/lines-meet");
-  EXPECT_STREQ(s.rules[1], "pp+pp/equal-span");
+  EXPECT_STREQ(s.ruleName(0), "pl+pl/lines-meet");
+  EXPECT_STREQ(s.ruleName(1), "pp+pp/equal-span");
+}
+
+// A Solution names its rules after the Registry that solved it is gone (it shares the registry's
+// name table): the names read afterwards are those the registry gave while it lived. (Under
+// ASan a name pointing into the destroyed registry would be a use after free.)
+TEST(WorkedExample, RuleNamesOutliveTheRegistry) {
+  auto registry = std::make_unique<Registry>();
+  registerBuiltins(*registry);
+  registry->freeze();
+  Solution s = solve(workedExample(), *registry);
+  ASSERT_GE(s.rules.size(), 2u);
+  std::vector<std::string> named;
+  for (const RuleCaseId& id : s.rules)
+    named.push_back(registry->rules()[id.rule].firedName(id.fired));
+  registry.reset();
+  ASSERT_EQ(s.ruleNames().size(), named.size());
+  std::size_t i = 0;
+  for (const char* name : s.ruleNames()) EXPECT_EQ(name, named[i++]);
+  EXPECT_EQ(named[0], "pl+pl/lines-meet");
 }
 
 }  // namespace

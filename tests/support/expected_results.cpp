@@ -17,7 +17,7 @@ namespace {
 
 std::string firedList(const Solution& s) {
   std::string all;
-  for (const char* f : s.rules) all += std::string(f) + " ";
+  for (const char* f : s.ruleNames()) all += std::string(f) + " ";
   return all;
 }
 
@@ -26,7 +26,8 @@ void checkOne(const Problem& p, const nlohmann::json& x, const Registry& registr
   if (x.contains("fires")) {
     const std::string want = x["fires"];
     EXPECT_TRUE(
-        std::any_of(s.rules.begin(), s.rules.end(), [&](const char* f) { return want == f; }))
+        std::any_of(s.ruleNames().begin(), s.ruleNames().end(),
+                    [&](const char* f) { return want == f; }))
         << want << " did not fire; fired: " << firedList(s);
   }
   EXPECT_EQ(toString(s.status), x["status"].get<std::string>()) << describeBranches(s);

@@ -166,7 +166,7 @@ std::string CheckReport::summary() const {
 
 std::string firedRules(const Solution& s) {
   std::string out;
-  for (const char* r : s.rules) out += (out.empty() ? "" : ", ") + std::string(r);
+  for (const char* r : s.ruleNames()) out += (out.empty() ? "" : ", ") + std::string(r);
   return out.empty() ? "(no rule)" : out;
 }
 

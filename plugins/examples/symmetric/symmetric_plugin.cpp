@@ -18,7 +18,7 @@ namespace symmetric_plugin {
 using namespace relpos;
 
 void decomposeSymmetric(const InputConstraint& c, const Feature& plane_W, SourceMask s,
-                        Decomposition& out) {
+                        Decomposition& out, const void* /*context*/) {
   const Feature& line = c.mobile;
   const Fundamental on_plane =
       Fundamental::pointPlane(Side::kMobile, line.point, plane_W.point, plane_W.direction, 0.0, s);

@@ -7,10 +7,11 @@
 namespace check_throws {
 using namespace relpos;
 
-void checkThrows(const InputConstraint&, std::vector<std::string>&) {
+void checkThrows(const InputConstraint&, std::vector<std::string>&, const void*) {
   throw std::runtime_error("the value check blew up");
 }
-void decomposeNothing(const InputConstraint&, const Feature&, SourceMask, Decomposition& out) {
+void decomposeNothing(const InputConstraint&, const Feature&, SourceMask, Decomposition& out,
+                      const void*) {
   out.unhandled = "never reached: the check throws first";
 }
 

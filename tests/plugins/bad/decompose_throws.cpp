@@ -7,10 +7,12 @@
 namespace decompose_throws {
 using namespace relpos;
 
-void decomposeThrows(const InputConstraint&, const Feature&, SourceMask, Decomposition&) {
+void decomposeThrows(const InputConstraint&, const Feature&, SourceMask, Decomposition&,
+                     const void*) {
   throw std::runtime_error("the decomposition blew up");
 }
-void decomposeThrowsAnInt(const InputConstraint&, const Feature&, SourceMask, Decomposition&) {
+void decomposeThrowsAnInt(const InputConstraint&, const Feature&, SourceMask, Decomposition&,
+                          const void*) {
   throw 42;
 }
 

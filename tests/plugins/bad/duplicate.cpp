@@ -4,7 +4,7 @@
 
 namespace duplicate_plugin {
 void decompose(const relpos::InputConstraint&, const relpos::Feature&, relpos::SourceMask,
-               relpos::Decomposition& out) {
+               relpos::Decomposition& out, const void*) {
   out.unhandled = "the duplicate plugin's distance decomposes nothing";
 }
 void registerAll(relpos::Registry& registry) {

@@ -8,13 +8,15 @@
 #include <limits>
 #include <stdexcept>
 
+#include "relpos/core/branch_sink.hpp"
 #include "relpos/core/plugin_api.hpp"
 #include "relpos/core/solution.hpp"
 
 namespace manifold_throws {
 using namespace relpos;
 
-std::uint16_t g_kind = 0;
+// The context of the callbacks: the registry's index of this plugin's kind.
+std::uint16_t kindOf(const void* context) { return *static_cast<const std::uint16_t*>(context); }
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void throwIf(bool yes, const char* method) {
@@ -74,51 +76,54 @@ class BadManifold final : public ManifoldBase<BadManifold> {
   int mode_;
 };
 
-void decompose(const InputConstraint& c, const Feature&, SourceMask s, Decomposition& out) {
+void decompose(const InputConstraint& c, const Feature&, SourceMask s, Decomposition& out,
+               const void* context) {
   Fundamental f;
   f.kind = FundamentalKind::kCustom;
-  f.custom = g_kind;
+  f.custom = kindOf(context);
   f.lo = f.hi = c.value;
   f.sources = s;
   out.addAlternative().push_back(f);
 }
 
-MatchResult match(MatchContext& ctx) {
-  const auto& ts = ctx.set.translational;
-  if (ts.size() != 1 || ts[0].kind != FundamentalKind::kCustom || ts[0].custom != g_kind)
-    return MatchResult::kNoMatch;
-  const int mode = static_cast<int>(ts[0].lo);
-  ctx.out.branches.emplace_back();
-  if (mode != kNoManifold)
-    ctx.out.branches.back().manifold.emplace<BadManifold>(mode == kStrayBranch ? kWellBehaved
-                                                                               : mode);
-  return MatchResult::kMatched;
+bool ours(const ConstraintSet& set, const void* context) {
+  const auto& ts = set.translational;
+  return ts.size() == 1 && ts[0].kind == FundamentalKind::kCustom &&
+         ts[0].custom == kindOf(context);
+}
+
+MatchResult match(MatchContext& ctx, const void* context) {
+  if (!ours(ctx.set, context)) return MatchResult::kNoMatch;
+  const int mode = static_cast<int>(ctx.set.translational[0].lo);
+  const bool added =
+      mode == kNoManifold
+          ? ctx.branches.add(Branch{})
+          : ctx.branches.add<BadManifold>(mode == kStrayBranch ? kWellBehaved : mode);
+  return added ? MatchResult::kMatched : MatchResult::kOverflow;
 }
 
 // Runs before match(): for kStrayBranch, appends a branch and still says it does not match.
-MatchResult leaveAStray(MatchContext& ctx) {
-  const auto& ts = ctx.set.translational;
-  if (ts.size() == 1 && ts[0].kind == FundamentalKind::kCustom && ts[0].custom == g_kind &&
-      ts[0].lo == kStrayBranch) {
-    ctx.out.branches.emplace_back();
-    ctx.out.branches.back().manifold.emplace<BadManifold>(kTooManyDof);
-  }
+MatchResult leaveAStray(MatchContext& ctx, const void* context) {
+  if (ours(ctx.set, context) && ctx.set.translational[0].lo == kStrayBranch)
+    ctx.branches.add<BadManifold>(kTooManyDof);
   return MatchResult::kNoMatch;
 }
 
-double residual(const Fundamental&, const Isometry3d&) { return 0.0; }
+double residual(const Fundamental&, const Isometry3d&, const void*) { return 0.0; }
 
 void registerAll(Registry& registry) {
-  g_kind = registry.addCustomKind({"bad-manifold", "leads to the bad manifold", &residual});
+  const std::uint16_t* kind = registry.keep(
+      registry.addCustomKind({"bad-manifold", "leads to the bad manifold", &residual}));
   ConstraintType t;
   t.name = "bad-manifold";
   t.accepts = {{FeatureKind::kPoint, FeatureKind::kPoint}};
   t.takes_value = true;
   t.decompose = &decompose;
+  t.context = kind;
   registry.addConstraintType(t);
   registry.addManifold({"Bad", "misbehaves as the constraint's value says", ""});
-  registry.addMatcher({"bad-manifold-stray", &leaveAStray});
-  registry.addMatcher({"bad-manifold", &match});
+  registry.addMatcher({"bad-manifold-stray", &leaveAStray, kind});
+  registry.addMatcher({"bad-manifold", &match, kind});
 }
 }  // namespace manifold_throws
 

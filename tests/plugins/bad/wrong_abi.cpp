@@ -2,7 +2,8 @@
 #include "relpos/core/plugin_api.hpp"
 
 namespace wrong_abi {
-long abi() { return relpos::pluginAbi() + 1000000L; }  // the next major version
+// The next version, with this relpos's layouts.
+long abi() { return relpos::pluginAbi() + (1L << relpos::kPluginAbiFingerprintBits); }
 const char* registerAll(relpos::Registry&) noexcept { return nullptr; }
 }  // namespace wrong_abi
 

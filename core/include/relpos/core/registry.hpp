@@ -11,10 +11,11 @@
 #include "relpos/core/fundamental.hpp"
 #include "relpos/core/problem.hpp"
 #include "relpos/core/rule.hpp"
+#include "relpos/core/rule_names.hpp"
 
 namespace relpos {
 
-struct Solution;
+class BranchSink;
 
 // " (built-in)" or " (plugin PATH)": where an item comes from, for a message about it.
 std::string originNote(const std::string& origin);
@@ -32,18 +33,24 @@ struct Decomposition {
   }
 };
 
+// Every registered callback is handed, as its last argument, the `context` its item was
+// registered with (nullptr when none): a plugin's own state (e.g. the index of its custom kind)
+// lives there instead of in a global, and two registries loading one plugin keep theirs apart.
+// Registry::keep() owns such state for as long as the registry (and its copies) live.
+
 // fixed_W is c.fixed placed in world coordinates; c.mobile stays in the mobile frame.
 using DecomposeFn = void (*)(const InputConstraint& c, const Feature& fixed_W, SourceMask source,
-                             Decomposition& out);
+                             Decomposition& out, const void* context);
 // Appends "field: problem" messages for a structurally valid constraint whose values are wrong
 // (e.g. "value: negative distance -1 for an unsigned distance").
-using CheckFn = void (*)(const InputConstraint& c, std::vector<std::string>& problems);
+using CheckFn = void (*)(const InputConstraint& c, std::vector<std::string>& problems,
+                         const void* context);
 // How far features placed in the world (the fixed one by the fixed pose, the mobile one by a pose
 // of a branch) are from meeting c, in units of the tolerance: the larger of the length part over
 // tol.length and the angle part over tol.angle (0 when c holds; NaN never: infinity instead). The
 // solver checks every branch it returns with it; a type without one is not checked.
 using ViolationFn = double (*)(const InputConstraint& c, const Feature& fixed_W,
-                               const Feature& mobile_W, const Tolerance& tol);
+                               const Feature& mobile_W, const Tolerance& tol, const void* context);
 
 struct FeaturePair {
   FeatureKind fixed, mobile;
@@ -71,6 +78,7 @@ struct ConstraintType {
   CheckFn check = nullptr;
   DecomposeFn decompose = nullptr;
   ViolationFn violation = nullptr;
+  const void* context = nullptr;  // handed to every call of check, decompose and violation
   std::string origin = "built-in";
   bool accepts_pair(FeatureKind f, FeatureKind m) const;
   // Runs `check` (when set) on c: an exception from it (plugin code) becomes one more problem,
@@ -104,23 +112,22 @@ struct RuleInfo {
 };
 
 // --- manifold matchers -------------------------------------------------------------------------
-// A matcher looks at a fully combined constraint set and either appends branches to the
-// solution (kMatched), proves the set empty (kInconsistent, with `conflict` and `reason`),
-// replaces it by derived sets that the solver combines and matches in turn (kDeferred, e.g. the
-// translational constraints re-anchored once the rotation is known), or passes (kNoMatch).
+// A matcher looks at a fully combined constraint set and either appends branches through
+// ctx.branches (kMatched), proves the set empty (kInconsistent, with `conflict` and `reason`),
+// replaces it by derived sets that the solver combines and matches in turn (ctx.branches.defer,
+// kDeferred: e.g. the translational constraints re-anchored once the rotation is known), or
+// passes (kNoMatch). When the sink refuses a branch or a set (the solve's max_branches is spent)
+// the matcher answers kOverflow. Built-in matchers are never handed a set holding a plugin's
+// fundamental kind (FundamentalKind::kCustom): only plugins' matchers know those.
 enum class MatchResult : unsigned char { kNoMatch, kMatched, kInconsistent, kOverflow, kDeferred };
-// Queues a derived constraint set; false when the solver's branch budget is spent.
-using DeferFn = bool (*)(void* solver, const ConstraintSet& derived);
 struct MatchContext {
   const ConstraintSet& set;
   const Tolerance& tol;
-  Solution& out;
-  DeferFn defer = nullptr;
-  void* solver = nullptr;
+  BranchSink& branches;
   SourceMask conflict = 0;
   const char* reason = "";
 };
-using MatchFn = MatchResult (*)(MatchContext& ctx);
+using MatchFn = MatchResult (*)(MatchContext& ctx, const void* context);
 
 struct ManifoldInfo {
   std::string name;  // manifold type name, e.g. "OneParallel"
@@ -130,17 +137,23 @@ struct ManifoldInfo {
 struct MatcherInfo {
   std::string name;
   MatchFn fn = nullptr;
+  const void* context = nullptr;  // handed to every call of fn
   std::string origin = "built-in";
+  // Set by the registry: the path of the plugin library this matcher comes from, living as long
+  // as Registry::loadedLibraries() (what its branches record as Branch::origin); nullptr for a
+  // built-in matcher.
+  const char* library = nullptr;
 };
 
 // --- custom fundamental kinds (plugins) --------------------------------------------------------
 // How far pose X_WM is from satisfying f (0 inside), in the units of f's value: what the
 // conformance kits sample with.
-using ResidualFn = double (*)(const Fundamental& f, const Isometry3d& X_WM);
+using ResidualFn = double (*)(const Fundamental& f, const Isometry3d& X_WM, const void* context);
 struct CustomKindInfo {
   std::string name;
   std::string description;
   ResidualFn residual = nullptr;
+  const void* context = nullptr;  // handed to every call of residual
   std::string origin = "built-in";
 };
 
@@ -157,8 +170,19 @@ class Registry {
   std::uint16_t addCustomKind(CustomKindInfo k);
   void freeze() { frozen_ = true; }
 
+  // Keeps `state` (a plugin's, for its callbacks' context) as long as this registry and its
+  // copies live; returns where it is, to store as an item's `context`.
+  template <typename T>
+  const T* keep(T state) {
+    auto kept = std::make_shared<const T>(std::move(state));
+    kept_.push_back(kept);
+    return kept.get();
+  }
+
   // While an origin is set (the plugin loader sets the plugin's path), every item added is
-  // stamped with it, and `allow_replace` lets it replace an item of the same name.
+  // stamped with it, and `allow_replace` lets it replace an item of the same name. A matcher
+  // added then also records the library kept for that path (MatcherInfo::library): the loader
+  // keeps the library before it registers the plugin's items.
   void setOrigin(std::string origin, bool allow_replace);
   void clearOrigin();
   // Keeps a loaded plugin library alive as long as this registry and every Solution solved with
@@ -175,6 +199,9 @@ class Registry {
   const ConstraintType* constraintType(const std::string& name) const;
   const std::vector<ConstraintType>& constraintTypes() const { return types_; }
   const std::vector<RuleInfo>& rules() const { return rules_; }
+  // The names of rules() and their cases, shared with every Solution solved with this registry
+  // (Solution::ruleName), so they outlive it.
+  const std::shared_ptr<const RuleNames>& ruleNames() const { return rule_names_; }
   const std::vector<ManifoldInfo>& manifolds() const { return manifolds_; }
   const std::vector<MatcherInfo>& matchers() const { return matchers_; }
   const std::vector<CustomKindInfo>& customKinds() const { return custom_kinds_; }
@@ -192,16 +219,21 @@ class Registry {
 
  private:
   void checkOpen() const;
+  // One node per loaded library, each holding the previous: copying the head keeps them all.
+  // Declared first so it is destroyed last: what is kept below (kept_, and an item's strings)
+  // may have been made by a library's code.
+  std::shared_ptr<const void> libraries_;
+  std::vector<std::shared_ptr<const void>> kept_;
   bool frozen_ = false;
   std::vector<ConstraintType> types_;
   std::vector<RuleInfo> rules_;
   std::vector<ManifoldInfo> manifolds_;
   std::vector<MatcherInfo> matchers_;
   std::vector<CustomKindInfo> custom_kinds_;
-  std::string origin_;  // empty: built-in
+  std::shared_ptr<const RuleNames> rule_names_;
+  std::string origin_;                    // empty: built-in
+  const char* origin_library_ = nullptr;  // libraryPath(origin_)
   bool allow_replace_ = false;
-  // One node per loaded library, each holding the previous: copying the head keeps them all.
-  std::shared_ptr<const void> libraries_;
   std::vector<std::string> plugin_paths_;
   std::array<std::array<std::vector<Entry>, kFundamentalKinds>, kFundamentalKinds> table_;
 };

@@ -8,6 +8,7 @@
 
 #include "relpos/core/fundamental.hpp"
 #include "relpos/core/manifold.hpp"
+#include "relpos/core/rule_names.hpp"
 
 namespace relpos {
 
@@ -28,16 +29,23 @@ struct Solution {
   // The plugin libraries of the registry that solved it: branches may run their code. Declared
   // first so it is destroyed last, after the branches.
   std::shared_ptr<const void> libraries;
+  // The names of the registry's rule cases (Registry::ruleNames), which `rules` indexes.
+  std::shared_ptr<const RuleNames> rule_names;
   Status status = Status::kNotSolved;
   std::string message = "relpos::solve was not called.";
   std::vector<Branch> branches;
-  std::vector<int> conflicts;      // input constraint indices (inconsistent)
-  std::vector<int> redundant;      // input constraint indices implied by the others
-  std::vector<const char*> rules;  // names of rules that fired, in order of first firing
+  std::vector<int> conflicts;     // input constraint indices (inconsistent)
+  std::vector<int> redundant;     // input constraint indices implied by the others
+  std::vector<RuleCaseId> rules;  // the rule cases that fired, in order of first firing
   double solve_us = 0.0;
 
   void clear();
-  void noteRule(const char* name);
+  // Records that `id` fired, unless a case of that name already did.
+  void noteRule(RuleCaseId id);
+  // The name of rules[i] (e.g. "pp+pp/circle"), valid as long as this Solution's rule_names.
+  const char* ruleName(std::size_t i) const { return rule_names->name(rules[i]); }
+  // Every rules[i]'s name, in order: `for (const char* name : solution.ruleNames())`.
+  RuleCaseNames ruleNames() const { return {rule_names.get(), rules}; }
   std::string briefReport() const;
 };
 

@@ -5,6 +5,7 @@
 // batch worker keeps one) it keeps its buffers' capacity.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,11 @@ struct Report {
   int best = -1;                    // the branch whose nearest pose is nearest; -1: none
   std::vector<int> conflicts;
   std::vector<int> redundant;
-  std::vector<const char*> rules;  // Solution::rules
+  // Solution::rules (ids) and the table naming them, shared with the Solution: the names stay
+  // valid as long as the Report, whatever becomes of the Solution and the Registry.
+  std::vector<RuleCaseId> rules;
+  std::shared_ptr<const RuleNames> rule_names;
+  const char* ruleName(std::size_t i) const { return rule_names->name(rules[i]); }
   double solve_us = 0.0;
 
   // Collision fields, when evaluated against a scene.
