@@ -56,7 +56,7 @@ std::unique_ptr<relpos::collision::Scene> loadScene(const std::string& file,
 // the specs the command will read. The first failure is one line on stderr; false then.
 bool loadPlugins(const std::string& cmd, const Args& a, relpos::Registry& reg);
 
-// The commands (SPEC.md §3), one file each in commands/.
+// The commands (docs/spec.md §3), one file each in commands/.
 int cmdSolve(const Args& a, const relpos::Registry& reg);
 int cmdRules(const Args& a, const relpos::Registry& reg);
 int cmdTable(const Args& a, const relpos::Registry& reg);

@@ -1,4 +1,4 @@
-// The relpos command (SPEC.md §3): finds the command, loads the plugins, runs it. The commands
+// The relpos command (docs/spec.md §3): finds the command, loads the plugins, runs it. The commands
 // live in commands/, their help in help.cpp.
 #include <csignal>
 #include <cstring>

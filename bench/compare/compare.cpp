@@ -1,6 +1,6 @@
 // One program, one run, one table: the same problems solved by relpos, SolveSpace's constraint
 // library and an NLopt SLSQP projection (peers.hpp says how each is set up). Every answer is
-// checked by the independent evaluator of tests/support (written from SPEC.md).
+// checked by the independent evaluator of tests/support (written from docs/spec.md).
 //   build/bench/relpos_compare            (markdown table on stdout)
 #include <algorithm>
 #include <chrono>

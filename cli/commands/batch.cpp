@@ -1,4 +1,4 @@
-// relpos batch (SPEC.md §3): many specs, one result line each, in input order whatever the
+// relpos batch (docs/spec.md §3): many specs, one result line each, in input order whatever the
 // thread count. Workers parse and solve; the main thread writes finished lines in order as soon
 // as they are next, draws the progress bar, and prints the summary.
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// relpos rules (SPEC.md §3): what the registry holds, or how often each rule case fired.
+// relpos rules (docs/spec.md §3): what the registry holds, or how often each rule case fired.
 #include <cstdio>
 #include <iostream>
 #include <map>

@@ -1,4 +1,4 @@
-// relpos solve (SPEC.md §3): one spec, its result document indented.
+// relpos solve (docs/spec.md §3): one spec, its result document indented.
 #include <iostream>
 #include <memory>
 #include <string>

@@ -1,4 +1,4 @@
-// relpos table (SPEC.md §3): one row per spec, with the median solve time.
+// relpos table (docs/spec.md §3): one row per spec, with the median solve time.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -46,7 +46,7 @@ int cmdTable(const Args& a, const Registry& reg) {
     std::printf("%-36s %-13s %8zu %-12s %10.2f", oneLine(pb.name).c_str(),
                 relpos::toString(sol.status), sol.branches.size(),
                 dofs.empty() ? "-" : dofs.c_str(), us[us.size() / 2]);
-    if (a.collision) {  // the collision-free branches (SPEC.md §2 collision_free_branches)
+    if (a.collision) {  // the collision-free branches (docs/spec.md §2 collision_free_branches)
       relpos::collision::MeshCache cache;
       if (const auto scene = loadScene(f, pb, cache)) {
         relpos::Report report;

@@ -1,4 +1,4 @@
-// The result document (SPEC.md §2), written straight to text from a Report: a batch writes one
+// The result document (docs/spec.md §2), written straight to text from a Report: a batch writes one
 // per spec, and building a JSON tree only to print it cost more than solving and parsing
 // together. Strings are escaped as JSON needs and always valid UTF-8 (result_write_test checks the
 // document and that every number reads back).
@@ -188,8 +188,8 @@ class Writer {
   bool empty_[16] = {};  // per open container: nothing in it yet (the result nests 6 deep)
 };
 
-// The orientation as SPEC.md writes it: unit quaternion coefficients (x, y, z, w), w ≥ 0 (one of
-// the two equal quaternions, deterministically).
+// The orientation as docs/spec.md writes it: unit quaternion coefficients (x, y, z, w), w ≥ 0 (one
+// of the two equal quaternions, deterministically).
 Eigen::Vector4d orientationOf(const Isometry3d& X) {
   Quaterniond q(X.linear());
   q.normalize();

@@ -1,6 +1,6 @@
-// Spec parsing (SPEC.md §1). Collects every problem it finds rather than stopping at the first,
-// so a user fixes a spec in one round. The text is read by simdjson (json_read.hpp); the checks
-// here walk its document.
+// Spec parsing (docs/spec.md §1). Collects every problem it finds rather than stopping at the
+// first, so a user fixes a spec in one round. The text is read by simdjson (json_read.hpp); the
+// checks here walk its document.
 #include <string.h>  // memmem (glibc)
 
 #include <algorithm>

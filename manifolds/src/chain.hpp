@@ -1,5 +1,5 @@
 #pragma once
-// Elementary motions for the chain manifolds (ARCHITECTURE.md: pose(θ) = A · exp(ξ₁θ₁) ⋯ · B).
+// Elementary motions for the chain manifolds (docs/architecture.md: pose(θ) = A · exp(ξ₁θ₁) ⋯ · B).
 #include "relpos/core/geometry.hpp"
 
 namespace relpos::manifolds::detail {

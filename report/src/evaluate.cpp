@@ -66,7 +66,7 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
   }
 }
 
-// The collision fields of SPEC.md §2: each branch's verdict at its nearest pose, its nearest
+// The collision fields of docs/spec.md §2: each branch's verdict at its nearest pose, its nearest
 // collision-free pose and free samples. Runs the branches' code, which may throw.
 void evaluateCollisions(const Solution& solution, const ReportOptions& opt,
                         const collision::Scene& scene, const Isometry3d& initial, Report& r) {

@@ -1,4 +1,4 @@
-// The constraint types of SPEC.md §1 and their decomposition into fundamental constraints
+// The constraint types of docs/spec.md §1 and their decomposition into fundamental constraints
 // (PMF Table I). Fixed geometry arrives in world coordinates, mobile geometry in the mobile frame.
 #include <algorithm>
 #include <cmath>

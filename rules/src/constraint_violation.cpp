@@ -1,4 +1,4 @@
-// How far a pose is from meeting each built-in constraint type (SPEC.md §1, "holds when"), in
+// How far a pose is from meeting each built-in constraint type (docs/spec.md §1, "holds when"), in
 // units of the tolerance: the solver's last check of every branch it returns (solver.cpp). Written
 // from the spec's table, not from the decomposition, so that it catches what a rule got wrong.
 // (The tests keep their own evaluator, tests/support/evaluator.cpp, so that each checks the other.)

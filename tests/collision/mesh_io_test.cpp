@@ -1,4 +1,5 @@
-// Reading meshes: the four formats SPEC.md names, and every kind of bad mesh refused with a reason.
+// Reading meshes: the four formats docs/spec.md §1.7 names, and every kind of bad mesh refused with
+// a reason.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

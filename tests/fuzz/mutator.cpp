@@ -28,7 +28,7 @@ void addSeed(const std::string& origin, const std::string& text, std::vector<See
   out.push_back(std::move(s));
 }
 
-// Keys a spec uses (SPEC.md §1), for renaming a key into another meaningful one.
+// Keys a spec uses (docs/spec.md §1), for renaming a key into another meaningful one.
 const std::vector<std::string> kKeys = {
     "relpos",    "name",        "units",       "length",    "angle",  "fixed",      "mobile",
     "pose",      "position",    "orientation", "rpy",       "matrix", "features",   "point",

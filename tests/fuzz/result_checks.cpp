@@ -202,7 +202,7 @@ class ResultReader {
       if (!p.contains(side)) {
         bad(where, "missing");
       } else if (p[side].is_null()) {
-        if (kind == "length") allowed_nulls_.insert(where);  // unbounded (SPEC.md §2)
+        if (kind == "length") allowed_nulls_.insert(where);  // unbounded (docs/spec.md §2)
       } else if (!p[side].is_number()) {
         bad(where, "not a number");
       } else {

@@ -1,7 +1,7 @@
 #pragma once
 // The invariants of issue 13 that hold on ANY input, checked on what relpos gives back: a parse
 // either gives a problem or one-line diagnostics that name a JSON path (or where the JSON is
-// malformed); a result is one valid UTF-8 JSON document of SPEC.md §2 whose numbers are all
+// malformed); a result is one valid UTF-8 JSON document of docs/spec.md §2 whose numbers are all
 // finite (only the nulls SPEC allows), and every pose it reports — each branch's nearest pose
 // and samples, as read back from the text — satisfies every input constraint by the tests'
 // evaluator (tests/support/evaluator.hpp, written from SPEC alone). Shared by the libFuzzer
@@ -77,7 +77,7 @@ void checkProblem(const Problem& p, Findings& out);
 // Whether a message (after "FILE: ") with the empty JSON path is about the document as a whole
 // (whose path the empty one is) and says where: a place in its text ("malformed JSON at line L,
 // column C: …", "too deeply nested at line L, column C: …", "… '1e400' (line L, column C)" of a
-// root that is a number) or its root not being an object (docs/spec-additions.md).
+// root that is a number) or its root not being an object (docs/spec.md §1.11).
 bool namesTheDocument(std::string_view message);
 
 // The first `n` characters of `s` with bytes outside printable ASCII as \xHH: quotable in a

@@ -1,4 +1,4 @@
-// The result line (writeResultLine) is the JSON document SPEC.md §2 describes: valid JSON in
+// The result line (writeResultLine) is the JSON document docs/spec.md §2 describes: valid JSON in
 // valid UTF-8 whatever the names hold, the same document as the indented one `relpos solve` prints
 // (both written from one Report), and every number in it
 // reads back as exactly the double it was written from, in the fewest digits that do so.
@@ -72,7 +72,7 @@ void expectNumber(const json& j, double v, const std::string& what) {
       << what << ": wrote " << v << ", read back " << j.get<double>();
 }
 
-// The orientation SPEC.md writes: the unit quaternion with w >= 0 (computed here on its own).
+// The orientation docs/spec.md writes: the unit quaternion with w >= 0 (computed here on its own).
 Eigen::Vector4d orientation(const Isometry3d& X) {
   Quaterniond q(X.linear());
   q.normalize();

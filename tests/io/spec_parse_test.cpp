@@ -1,5 +1,5 @@
-// Spec parsing: every form of SPEC.md §1 parses to the right values, and every kind of bad input
-// gives an error naming the JSON path and the problem.
+// Spec parsing: every form of docs/spec.md §1 parses to the right values, and every kind of bad
+// input gives an error naming the JSON path and the problem.
 #include <gtest/gtest.h>
 
 #include <fstream>

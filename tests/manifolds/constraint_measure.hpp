@@ -1,6 +1,6 @@
 #pragma once
 // A translational constraint's own measure at a pose (R, T), computed from its definition
-// (SPEC.md §1: a point of one side against the element (q, d) of the other, the mobile side's
+// (docs/spec.md §1: a point of one side against the element (q, d) of the other, the mobile side's
 // geometry moved by the pose), independently of the manifolds' shapeOf.
 #include <cmath>
 

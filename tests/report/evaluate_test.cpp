@@ -1,7 +1,7 @@
 // The report stage (report/src/evaluate.cpp) against what it promises, checked independently:
 // the nearest pose is the branch's pose nearest the initial pose (no dense sample beats it), the
-// samples lie on the branch (the tests' own evaluator of SPEC.md §1), the best branch is the one
-// nearest, and the collision verdicts agree with the scene.
+// samples lie on the branch (the tests' own evaluator of docs/spec.md §1), the best branch is the
+// one nearest, and the collision verdicts agree with the scene.
 #include "relpos/report/evaluate.hpp"
 
 #include <gtest/gtest.h>

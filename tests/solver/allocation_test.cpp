@@ -1,4 +1,4 @@
-// Repeated solves into a reused Workspace and Solution allocate nothing (ARCHITECTURE.md "Hot
+// Repeated solves into a reused Workspace and Solution allocate nothing (docs/architecture.md "Hot
 // path"). Counts every global operator new while solving.
 #include <gtest/gtest.h>
 

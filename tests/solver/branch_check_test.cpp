@@ -1,7 +1,7 @@
 // The solver's last check (solver.cpp, checkBranches): a branch whose pose breaks an input
 // constraint, or that evaluates to NaN, never leaves the solver — the answer is `unhandled`. And
 // the types' own violation functions (ConstraintType::violation) agree with the tests' evaluator,
-// written separately from SPEC.md, on random poses of random problems.
+// written separately from docs/spec.md, on random poses of random problems.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,8 +82,8 @@ TEST(BranchCheck, ABranchHoldingNaNIsNotReturned) {
 // With equal length and angle tolerances the types' violation is the larger of its length and angle
 // parts over that tolerance, the larger part being what the tests' evaluator reports (which reads a
 // line against a plane as |d·n| where the types read the angle asin |d·n|: the same zero). Both are
-// read from SPEC.md's table independently: they must agree on what holds — at the known pose — and
-// on what does not, at random poses.
+// read from docs/spec.md §1.9's table independently: they must agree on what holds — at the known
+// pose — and on what does not, at random poses.
 TEST(BranchCheck, TypesViolationAgreesWithTheTestsEvaluator) {
   Rng rng(77);
   const Registry& reg = builtinRegistry();

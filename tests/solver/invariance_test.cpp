@@ -83,7 +83,7 @@ Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>&
   opt.known = known ? &*known : nullptr;
   // A frame origin `reach` from the features: its coordinates carry ulp(reach) of rounding, so the
   // branch's rotation is known to ~ulp(reach) / size, and the nearest pose — nearest at that
-  // origin, SPEC.md §2 — may turn the features by that much times the lever `reach`.
+  // origin, docs/spec.md §2 — may turn the features by that much times the lever `reach`.
   const double lever = reach / size;
   opt.known_tolerance += 64 * std::numeric_limits<double>::epsilon() * lever * lever;
   const CheckReport r = checkSolution(p, s, opt);

@@ -1,4 +1,4 @@
-// The nearest pose of a branch (SPEC.md §2 `nearest`) on the bundled generated grasp and weld
+// The nearest pose of a branch (docs/spec.md §2 `nearest`) on the bundled generated grasp and weld
 // specs, which cover every manifold the batch produces (separable with and without closed-form
 // translations, both radial grasps): no sampled pose of the branch is nearer, and the parameters
 // set in closed form during the search (Manifold::closedFormParams) are the nearest given the

@@ -324,7 +324,7 @@ void twoConesApart(WB& w, double gap, int k) {
 struct SpecialAngle {
   FeatureKind fixed, mobile;
   double target;
-  double lo, hi;  // the domain of the value (SPEC.md §1)
+  double lo, hi;  // the domain of the value (docs/spec.md §1)
 };
 
 // The fixed direction for a mobile direction u and angle value v.

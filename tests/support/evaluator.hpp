@@ -1,5 +1,5 @@
 #pragma once
-// An evaluator of input constraints written from SPEC.md §1 alone, independent of the solver's
+// An evaluator of input constraints written from docs/spec.md §1 alone, independent of the solver's
 // decomposition and rules: it places both features and checks the "holds when" column.
 #include <string>
 #include <vector>

@@ -64,7 +64,7 @@ Params drawParams(const Manifold& m, const Params& centre, double window, std::m
 
 using json = nlohmann::json;
 
-// Every null in the result line must be one SPEC.md §2 allows: an unbounded parameter's bound
+// Every null in the result line must be one docs/spec.md §2 allows: an unbounded parameter's bound
 // (the manifold's bound is ±inf, not NaN), the DOF split of a mixed branch, `best` without
 // branches. Anything else is a NaN or inf that the writer turned into null.
 void checkNulls(const json& j, const std::string& path, const std::vector<std::string>& keys,

@@ -1,5 +1,5 @@
 #pragma once
-// A Problem written back as a spec (SPEC.md §1), so that a failing property case prints a file
+// A Problem written back as a spec (docs/spec.md §1), so that a failing property case prints a file
 // that `relpos solve` reproduces (as FCL prints the poses of a failing query). The property tests
 // solve the parse of the very text they print (written()): writing a parsed problem again is not
 // exact (a rotation's quaternion rounds), and near-degenerate verdicts flip on such last bits.

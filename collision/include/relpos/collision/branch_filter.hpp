@@ -1,8 +1,8 @@
 #pragma once
-// Collision filtering of one solution branch (SPEC.md §2 "Collision fields"): the verdict for its
-// nearest pose, the collision-free pose nearest the initial pose, and which parameter samples are
-// free. Data only: the writer (relpos/io/result_writer.hpp) writes it as the branch's "collision"
-// object.
+// Collision filtering of one solution branch (docs/spec.md §2 "Collision fields"): the verdict for
+// its nearest pose, the collision-free pose nearest the initial pose, and which parameter samples
+// are free. Data only: the writer (relpos/io/result_writer.hpp) writes it as the branch's
+// "collision" object.
 #include <cstdint>
 
 #include "relpos/collision/scene.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Triangle meshes for collision filtering (SPEC.md §1 `mesh`): STL, OBJ, OFF or PLY, in the
+// Triangle meshes for collision filtering (docs/spec.md §1 `mesh`): STL, OBJ, OFF or PLY, in the
 // object's own frame. Reading uses CGAL's IO; CGAL stays inside collision/src.
 #include <array>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The collision scene of one problem: the mobile object's mesh tested against the fixed object's
-// and every obstacle's (SPEC.md §2 "Collision fields"). FCL stays inside collision/src: models
+// and every obstacle's (docs/spec.md §2 "Collision fields"). FCL stays inside collision/src: models
 // are opaque here.
 #include <map>
 #include <memory>
@@ -46,7 +46,7 @@ struct SceneObject {
   ModelPtr model;
 };
 
-// Penetration up to this depth is touching, not colliding (SPEC.md).
+// Penetration up to this depth is touching, not colliding (docs/spec.md §5.2).
 inline constexpr double kTouchTolerance = 1e-6;
 
 class Scene {

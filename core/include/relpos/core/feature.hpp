@@ -1,5 +1,5 @@
 #pragma once
-// Features of an object, in that object's own frame (SPEC.md §1). Directions are unit after
+// Features of an object, in that object's own frame (docs/spec.md §1). Directions are unit after
 // parsing. The four kinds are fixed by the spec format, so they are a closed enum.
 #include <string>
 

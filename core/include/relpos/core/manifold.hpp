@@ -18,7 +18,7 @@ inline constexpr int kMaxDof = 6;
 using Params = std::array<double, kMaxDof>;
 
 // The built-in manifolds give angles and lengths only; kOther is for a plugin's parameter that is
-// neither (SPEC.md §2 lets results say "other"): the nearest-pose search steps it by absolute
+// neither (docs/spec.md §2 lets results say "other"): the nearest-pose search steps it by absolute
 // amounts, as an angle, but does not grid it.
 enum class ParamKind : unsigned char { kAngle, kLength, kOther };
 const char* toString(ParamKind k);
@@ -93,7 +93,7 @@ class ManifoldBase : public Manifold {
 };
 
 // A mixed (non-separable) manifold: its DOF do not split into rotational and translational ones,
-// so the result writes `null` for both (SPEC.md §2).
+// so the result writes `null` for both (docs/spec.md §2).
 template <typename Derived>
 class MixedManifoldBase : public ManifoldBase<Derived> {
  public:
@@ -143,7 +143,7 @@ class ManifoldHolder {
   Manifold* ptr_ = nullptr;
 };
 
-// Distance used for "nearest" (SPEC.md §2): translation distance plus rotation angle.
+// Distance used for "nearest" (docs/spec.md §2): translation distance plus rotation angle.
 double poseDistance(const Isometry3d& a, const Isometry3d& b);
 
 // A point of every manifold: each parameter at the middle of its bounds (0 for a full turn), at

@@ -26,7 +26,7 @@ struct ObjectSpec {
   const Feature* find(const std::string& feature_name) const;
 };
 
-// One input constraint (SPEC.md §1 "Constraints"). Angles are in radians after parsing.
+// One input constraint (docs/spec.md §1 "Constraints"). Angles are in radians after parsing.
 struct InputConstraint {
   std::string type;  // "distance", "angle", "coincident", ... (registry name)
   std::string id;    // optional user id, echoed in diagnostics

@@ -1,5 +1,5 @@
 #pragma once
-// The answer of a solve (SPEC.md §2). Defaults describe a solve that never ran. A Solution can
+// The answer of a solve (docs/spec.md §2). Defaults describe a solve that never ran. A Solution can
 // be reused across solves: clear() keeps every buffer's capacity, so repeated solves into the
 // same Solution allocate nothing.
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 // solve(problem, registry, options, workspace, solution): decompose -> combine -> synthesise
-// (ARCHITECTURE.md). Never throws and never reads files on a valid problem; the status says what
-// happened. Reusing the Workspace and the Solution makes repeated solves allocation-free.
+// (docs/architecture.md). Never throws and never reads files on a valid problem; the status says
+// what happened. Reusing the Workspace and the Solution makes repeated solves allocation-free.
 #include <random>
 #include <string>
 #include <vector>
@@ -19,7 +19,7 @@ struct SolverOptions {
   // Every rule condition ("parallel", "d_a = d_b", "on the line") is decided within these:
   // lengths relative to the problem's size (the diagonal of its constrained features' box, or a
   // longer length value; never below the rounding of its largest coordinate), angles in radians
-  // (docs/spec-additions.md, "Tolerances and numerical soundness"). Loosen them for data with few
+  // (docs/spec.md §6, "Tolerances and numerical soundness"). Loosen them for data with few
   // significant digits (e.g. 1e-6 for CAD exports).
   double length_tolerance = 1e-9;
   double angle_tolerance = 1e-9;
@@ -56,7 +56,7 @@ struct NearestPose {
 NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial);
 
 // Parameters drawn uniformly within the manifold's bounds; an unbounded one within ±window of
-// centre's (SPEC.md §2 `samples`: centre = the nearest pose's parameters).
+// centre's (docs/spec.md §2 `samples`: centre = the nearest pose's parameters).
 Params sampleParameters(const Manifold& m, const Params& centre, double window,
                         std::mt19937_64& rng);
 

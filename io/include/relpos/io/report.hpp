@@ -1,7 +1,7 @@
 #pragma once
-// The result of SPEC.md §2 as C++ values: what relpos::evaluate (report/) computes from a solved
-// problem and what the result writer serialises. Nothing here runs a branch's code: a Report is
-// plain data, to hand to a controller, a planner export or bindings. Reused across problems (a
+// The result of docs/spec.md §2 as C++ values: what relpos::evaluate (report/) computes from a
+// solved problem and what the result writer serialises. Nothing here runs a branch's code: a Report
+// is plain data, to hand to a controller, a planner export or bindings. Reused across problems (a
 // batch worker keeps one) it keeps its buffers' capacity.
 #include <array>
 #include <cstddef>
@@ -27,7 +27,7 @@ struct Contact {
   double depth;  // penetration depth; negative: the missing distance to the clearance
 };
 
-// One branch's collision verdict (SPEC.md §2 "Collision fields").
+// One branch's collision verdict (docs/spec.md §2 "Collision fields").
 struct CollisionReport {
   bool nearest_collides = false;
   std::vector<Contact> nearest_contacts;

@@ -1,6 +1,6 @@
 #pragma once
-// Writing results (SPEC.md §2): a Report (relpos/io/report.hpp, computed by relpos::evaluate in
-// report/) as JSON text. The one writer of every result field: a new field is written here only.
+// Writing results (docs/spec.md §2): a Report (relpos/io/report.hpp, computed by relpos::evaluate
+// in report/) as JSON text. The one writer of every result field: a new field is written here only.
 // Never throws on a Report's contents: strings are escaped as JSON needs and always valid UTF-8
 // (ill-formed bytes become U+FFFD), non-finite numbers are null.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Reading specs (SPEC.md §1). Bad input never throws out of these
+// Reading specs (docs/spec.md §1). Bad input never throws out of these
 // functions: every problem found becomes a Diagnostic naming the JSON path and what is wrong,
 // on one line (control characters and ill-formed UTF-8 in echoed text are escaped).
 #include <optional>

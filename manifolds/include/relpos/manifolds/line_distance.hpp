@@ -2,7 +2,7 @@
 // A mixed (non-separable) manifold (Somani 004 §IV-A): every pose at which a mobile line lies at
 // a (skew) distance v ∈ [lo, hi] from a fixed line — SPEC's `"parallel": false` line-line
 // distance, and cylinder-line tangency (v = r). Written as a chain of elementary motions
-// (ARCHITECTURE.md; Ruiz & Ferreira's SE(3) subgroups):
+// (docs/architecture.md; Ruiz & Ferreira's SE(3) subgroups):
 //   X_WM = F · Rz(ψ) · Tz(t) · Tx(v) · Rx(γ) · Tz(s) · Rz(ω) · L⁻¹
 // F: frame of the fixed line (z along it), L: frame of the mobile line in the mobile object.
 // ψ, t place the foot of the common perpendicular, v its length, γ the mobile line's direction in

@@ -1,5 +1,5 @@
 #pragma once
-// The report stage (SPEC.md §2): from a solved problem to the values the result holds — per
+// The report stage (docs/spec.md §2): from a solved problem to the values the result holds — per
 // branch the pose nearest the initial pose, samples and, against a collision scene, the
 // collision verdicts; the best branch. Everything that runs a branch's code (a plugin's manifold
 // included) runs here, so that the writer (relpos/io/result_writer.hpp) only serialises.

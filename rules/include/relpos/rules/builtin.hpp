@@ -5,7 +5,7 @@
 #include "relpos/core/registry.hpp"
 
 namespace relpos::rules {
-// Constraint types of SPEC.md §1 with their decomposition (PMF Table I).
+// Constraint types of docs/spec.md §1 with their decomposition (PMF Table I).
 void registerBuiltinConstraintTypes(Registry& registry);
 // The combination rules, one family per PMF Appendix IV table (and Somani 004 Table VII for
 // ranges), in the order of rules/src/families.def: that order decides which rule a pair meets
