@@ -143,7 +143,7 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
       return std::abs(skewDistance(C, L) - C.r);
     }
   }
-  // The example plugins' types, from their documentation (docs/spec.md §4.4).
+  // The example plugins' types, from their documentation (docs/spec.md §4.5).
   if (t == "symmetric")
     return std::max(parallelViolation(M.d, F.d, Orientation::kEither),
                     std::abs(pointPlane(M.a, F)));
