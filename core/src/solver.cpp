@@ -117,6 +117,14 @@ std::string derivedErrText(const RuleOutput& out) {
   return buf;
 }
 
+// The solution keeps the registry's plugin libraries and rule names alive. Assigned only when they
+// differ: a solve into a reused Solution then costs no atomic reference counting.
+void shareRegistryData(const Registry& registry, Solution& solution) {
+  if (solution.libraries != registry.loadedLibraries())
+    solution.libraries = registry.loadedLibraries();
+  if (solution.rule_names != registry.ruleNames()) solution.rule_names = registry.ruleNames();
+}
+
 // Which case of rule `index` fired (-1, the rule itself, for a `fired` that names no case).
 RuleCaseId caseId(int index, const RuleInfo& rule, int fired) {
   const bool is_case = fired >= 0 && fired < static_cast<int>(rule.cases.size());
@@ -382,9 +390,10 @@ bool hasCustomKind(const ConstraintSet& set) {
   return false;
 }
 
+// The set bits of m in increasing order: one step per set bit, not per bit (a solve's redundant
+// and conflicting constraints are a few of up to 64).
 void listBits(SourceMask m, std::vector<int>& out) {
-  for (int k = 0; k < 64; ++k)
-    if (m >> k & 1) out.push_back(k);
+  for (; m != 0; m &= m - 1) out.push_back(__builtin_ctzll(m));
 }
 
 }  // namespace
@@ -485,8 +494,7 @@ void prepare(const SolverOptions& options, Workspace& ws, Solution& solution) {
 bool solveOnce(const Problem& problem, const Registry& registry, const SolverOptions& options,
                bool centre, Workspace& ws, Solution& solution, Tolerance& tol) {
   prepare(options, ws, solution);
-  solution.libraries = registry.loadedLibraries();
-  solution.rule_names = registry.ruleNames();
+  shareRegistryData(registry, solution);
   SolveState st{registry, options, Tolerance(), ws, solution, 0, "", std::string(), false};
   std::string why;
   detail::Centring frame;
@@ -595,8 +603,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
 void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Registry& registry,
                         const SolverOptions& options, Workspace& ws, Solution& solution) {
   prepare(options, ws, solution);
-  solution.libraries = registry.loadedLibraries();
-  solution.rule_names = registry.ruleNames();
+  shareRegistryData(registry, solution);
   SolveState st{registry, options, tol, ws, solution, 0, "", std::string(), false};
   ws.pending.clear();
   ws.pending.push_back(set);

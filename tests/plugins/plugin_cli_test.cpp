@@ -3,54 +3,27 @@
 // throws once loaded is an answer (an `unhandled` result, an `invalid` line) naming the plugin,
 // in `solve` and in every line of `batch` — never a signal, never exit 1, never a lost line.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "bad/manifold_throws.hpp"
+#include "cli_run.hpp"
+#include "json_lines.hpp"
 #include "test_config.hpp"
 
 namespace {
-namespace fs = std::filesystem;
 using nlohmann::json;
-
-struct CmdResult {
-  int code;  // -1: ended by a signal
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-fs::path scratchDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path d = fs::temp_directory_path() /
-               ("relpos_plugin_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-  fs::create_directories(d);
-  return d;
-}
-
-CmdResult run(const std::string& args) {
-  const fs::path d = scratchDir();
-  const std::string cmd = std::string(RELPOS_EXE) + " " + args + " >" + (d / "out").string() +
-                          " 2>" + (d / "err").string();
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(d / "out"), slurp(d / "err")};
-}
+using relpos::test::CmdResult;
+using relpos::test::parsedLines;
+using relpos::test::run;
+using relpos::test::scratchDir;
+using relpos::test::slurp;
+namespace fs = std::filesystem;
 
 fs::path writeFile(const std::string& name, const std::string& text) {
-  const fs::path p = scratchDir() / name;
-  std::ofstream(p, std::ios::binary) << text;
-  return p;
+  return relpos::test::writeSpec(name, text);
 }
 
 std::string badPlugin(const std::string& name) {
@@ -72,13 +45,6 @@ std::string onePairSpec(const std::string& type, int value = -1) {
                {"mobile", {{"features", {{"P", {{"point", {0, 0, 0}}}}}}}},
                {"constraints", {c}}};
   return spec.dump();
-}
-
-std::vector<json> lines(const std::string& text) {
-  std::vector<json> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(json::parse(line));
-  return out;
 }
 
 void expectOneLine(const CmdResult& r, const std::string& start, const std::string& expected) {
@@ -161,7 +127,7 @@ TEST(PluginCli, BatchWritesEveryLineWhenPluginCodeThrows) {
     const CmdResult r =
         run("batch " + in.string() + " --samples 2 --jobs 2 --plugin " + badPlugin(t.plugin));
     ASSERT_EQ(r.code, 0) << r.err;
-    const auto out = lines(r.out);
+    const auto out = parsedLines(r.out);
     ASSERT_EQ(out.size(), 3u) << r.out;
     EXPECT_EQ(out[0]["status"], "solved");
     EXPECT_EQ(out[1]["status"], "unhandled");
@@ -186,7 +152,7 @@ TEST(PluginCli, AValueCheckThatThrowsIsTheSpecsProblem) {
       writeFile("in.jsonl", good + "\n" + onePairSpec("explodes-in-check") + "\n" + good + "\n");
   const CmdResult r = run("batch " + in.string() + plugin);
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto out = lines(r.out);
+  const auto out = parsedLines(r.out);
   ASSERT_EQ(out.size(), 3u) << r.out;
   EXPECT_EQ(out[1]["status"], "invalid");
   EXPECT_NE(out[1]["message"].get<std::string>().find(expected), std::string::npos)
@@ -240,7 +206,7 @@ TEST(PluginCli, AManifoldThatThrowsWhileFilteringCollisionsInTableAndBatch) {
   const fs::path in = writeFile("collide.jsonl", spec.dump() + "\n" + good.dump() + "\n");
   const CmdResult b = run("batch " + in.string() + " --collision" + plugin);
   ASSERT_EQ(b.code, 0) << b.err;
-  const auto out = lines(b.out);
+  const auto out = parsedLines(b.out);
   ASSERT_EQ(out.size(), 2u) << b.out;
   EXPECT_EQ(out[0]["status"], "unhandled");
   EXPECT_TRUE(out[0]["branches"].empty());
