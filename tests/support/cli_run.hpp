@@ -3,6 +3,7 @@
 // folder, stdout and stderr captured.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -27,12 +28,12 @@ inline std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-// A folder of this test's own (made on first use).
+// A folder of this test's own (made on first use): the process id and the suite in its name, as
+// ctest runs the CLI and plugin CLI binaries side by side.
 inline fs::path scratchDir() {
-  fs::path d =
-      fs::temp_directory_path() /
-      ("relpos_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  fs::path d = fs::temp_directory_path() / ("relpos_cli_test_" + std::to_string(::getpid()) + "_" +
+                                            info->test_suite_name() + "_" + info->name());
   fs::create_directories(d);
   return d;
 }
