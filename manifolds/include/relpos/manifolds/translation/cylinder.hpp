@@ -4,15 +4,10 @@
 
 namespace relpos::manifolds::translation {
 
-struct Cylinder : ShapeBase<Cylinder> {
+struct Cylinder : OneConstraintShape<Cylinder> {
   static constexpr const char* kName = "Cylinder";
   static constexpr const char* kSummary = "2 DOF: point-line distance";
-  explicit Cylinder(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 2; }
   Parameter parameter(int i) const;

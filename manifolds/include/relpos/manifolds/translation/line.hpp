@@ -4,15 +4,10 @@
 
 namespace relpos::manifolds::translation {
 
-struct Line : ShapeBase<Line> {
+struct Line : OneConstraintShape<Line> {
   static constexpr const char* kName = "Line";
   static constexpr const char* kSummary = "1 DOF: point on a line";
-  explicit Line(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 1; }
   Parameter parameter(int i) const;

@@ -4,15 +4,10 @@
 
 namespace relpos::manifolds::translation {
 
-struct Plane : ShapeBase<Plane> {
+struct Plane : OneConstraintShape<Plane> {
   static constexpr const char* kName = "Plane";
   static constexpr const char* kSummary = "2 DOF: point on a plane";
-  explicit Plane(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 2; }
   Parameter parameter(int i) const;

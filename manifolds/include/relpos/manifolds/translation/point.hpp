@@ -4,15 +4,10 @@
 
 namespace relpos::manifolds::translation {
 
-struct Point : ShapeBase<Point> {
+struct Point : OneConstraintShape<Point> {
   static constexpr const char* kName = "Point";
   static constexpr const char* kSummary = "0 DOF: point-point coincidence";
-  explicit Point(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 0; }
   Parameter parameter(int i) const;

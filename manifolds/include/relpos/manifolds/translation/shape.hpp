@@ -82,5 +82,16 @@ inline double clampToRange(const Fundamental& f, double v) {
   return v < f.lo ? f.lo : (v > f.hi ? f.hi : v);
 }
 
+// A shape defined by one constraint (most of them): holds it and visits it.
+template <typename Derived>
+struct OneConstraintShape : ShapeBase<Derived> {
+  explicit OneConstraintShape(const Fundamental& f) : c(f) {}
+  Fundamental c;
+  template <typename Self, typename Fn>
+  static void eachConstraint(Self& self, Fn fn) {
+    fn(self.c);
+  }
+};
+
 }  // namespace translation
 }  // namespace relpos::manifolds

@@ -4,16 +4,11 @@
 
 namespace relpos::manifolds::translation {
 
-struct Shell : ShapeBase<Shell> {
+struct Shell : OneConstraintShape<Shell> {
   static constexpr const char* kName = "Shell";
   static constexpr const char* kSummary =
       "3 DOF: point-point distance within a range (a thick sphere)";
-  explicit Shell(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 3; }
   Parameter parameter(int i) const;

@@ -4,16 +4,11 @@
 
 namespace relpos::manifolds::translation {
 
-struct Slab : ShapeBase<Slab> {
+struct Slab : OneConstraintShape<Slab> {
   static constexpr const char* kName = "Box";
   static constexpr const char* kSummary =
       "3 DOF: point-plane distance within a signed range (an infinite box)";
-  explicit Slab(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 3; }
   Parameter parameter(int i) const;

@@ -4,15 +4,10 @@
 
 namespace relpos::manifolds::translation {
 
-struct ThickCylinder : ShapeBase<ThickCylinder> {
+struct ThickCylinder : OneConstraintShape<ThickCylinder> {
   static constexpr const char* kName = "ThickCylinder";
   static constexpr const char* kSummary = "3 DOF: point-line distance within a range";
-  explicit ThickCylinder(const Fundamental& f) : c(f) {}
-  Fundamental c;
-  template <typename Self, typename Fn>
-  static void eachConstraint(Self& self, Fn fn) {
-    fn(self.c);
-  }
+  using OneConstraintShape::OneConstraintShape;
 
   int dof() const { return 3; }
   Parameter parameter(int i) const;
