@@ -1,0 +1,49 @@
+#pragma once
+// Every isolated root of one real member of a Family, each certified (issue 15, docs/spec.md §8):
+// coefficient-parameter homotopy from the family's start system (start_system.hpp), every
+// endpoint proven by Krawczyk's test in Boost.Interval, boxes checked pairwise disjoint. The
+// count of distinct certified roots equal to the family's root count proves the list complete.
+// Deterministic: the same family, target and options give the same roots in the same order, on
+// every run and thread count.
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "relpos/complete/family.hpp"
+
+namespace relpos::complete {
+
+// The roots of a generic complex member (the start of every homotopy in its family).
+struct StartSystem {
+  std::vector<Complex> params;         // parameterCount()
+  std::vector<Eigen::VectorXcd> roots;  // all of its isolated roots (the family's root count)
+};
+
+// The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
+// by the signature, so the same on every run) and kept for the process; thread-safe.
+const StartSystem& startSystem(const Family& f);
+
+struct CertifiedRoot {
+  Eigen::VectorXcd x;   // the root's approximation (box centre)
+  double radius = 0.0;  // the box x ± radius (every real and imaginary part) holds exactly one root
+  bool real = false;    // proven real: a real box (imaginary parts 0) passed the test
+};
+
+struct FiberOptions {
+  std::uint64_t seed = 1;  // of the random γ of each tracking attempt
+  int attempts = 3;        // tracking attempts (a new γ each) before giving up on a missing root
+};
+
+struct FiberResult {
+  std::vector<CertifiedRoot> roots;  // distinct (disjoint boxes), sorted deterministically
+  int root_count = 0;                // the family's root count (paths tracked per attempt)
+  bool complete = false;             // roots.size() == root_count: no isolated root is missing
+  int attempts = 0;                  // attempts used
+};
+
+// target: the real member's parameters (parameterCount()).
+FiberResult solveFiber(const Family& f, const std::vector<double>& target,
+                       const FiberOptions& options = FiberOptions());
+
+}  // namespace relpos::complete
