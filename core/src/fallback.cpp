@@ -96,9 +96,8 @@ void answerByFallback(const Problem& problem, const Registry& registry,
   if (!answered || solution.status == Status::kUnhandled) {
     // Not answered: the rules' reason, and the stage's own when it gave one.
     const bool own = !solution.message.empty() && solution.message != rules_reason;
-    return restoreUnhandled(solution,
-                            own ? rules_reason + "; " + who() + ": " + solution.message
-                                : rules_reason);
+    return restoreUnhandled(
+        solution, own ? rules_reason + "; " + who() + ": " + solution.message : rules_reason);
   }
   if (!bad.empty()) return restoreUnhandled(solution, rules_reason + "; " + who() + " " + bad);
   // The same last check as the rules' branches (§6.5): a certified pose must meet every input

@@ -113,9 +113,8 @@ void Registry::setFallback(FallbackInfo f, bool replace) {
   checkOpen();
   if (!f.fn) throw std::invalid_argument("fallback '" + f.name + "' has no function");
   if (fallback_.fn && !replace && !allow_replace_)
-    throw std::invalid_argument("fallback '" + f.name + "': the numeric stage '" +
-                                fallback_.name + "' is already registered (by " +
-                                fallback_.origin + ")");
+    throw std::invalid_argument("fallback '" + f.name + "': the numeric stage '" + fallback_.name +
+                                "' is already registered (by " + fallback_.origin + ")");
   if (!origin_.empty()) f.origin = origin_;
   f.library = origin_.empty() ? nullptr : origin_library_;
   fallback_ = std::move(f);

@@ -31,6 +31,10 @@ void checkOne(const Problem& p, const nlohmann::json& x, const Registry& registr
         << want << " did not fire; fired: " << firedList(s);
   }
   EXPECT_EQ(toString(s.status), x["status"].get<std::string>()) << describeBranches(s);
+  // The rules' closed forms enumerate every branch (docs/spec.md §2.2): their answers are
+  // complete, their branches exact.
+  EXPECT_EQ(s.complete, s.status == Status::kSolved || s.status == Status::kInconsistent);
+  for (const Branch& b : s.branches) EXPECT_TRUE(b.exact) << describeBranches(s);
   EXPECT_EQ(s.branches.size(), x["branches"].get<std::size_t>()) << describeBranches(s);
   std::vector<int> dofs, want = x["dof"].get<std::vector<int>>();
   for (const auto& b : s.branches) dofs.push_back(b.manifold->dof());

@@ -42,8 +42,8 @@ struct BranchReport {
   int dof = 0;
   int rotational_dof = -1;  // -1 for a mixed manifold (written as null), with translational_dof
   int translational_dof = -1;
-  std::string manifold;  // Manifold::describe()
-  bool exact = true;     // Branch::exact: a closed form; false: found numerically, `certified`
+  std::string manifold;   // Manifold::describe()
+  bool exact = true;      // Branch::exact: a closed form; false: found numerically, `certified`
   Certificate certified;  // Branch::certified (zero for an exact branch)
   std::array<Parameter, kMaxDof> parameters{};
   NearestPose nearest;           // the branch's pose nearest the initial pose
