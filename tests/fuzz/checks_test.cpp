@@ -126,8 +126,8 @@ TEST(FuzzChecks, CompletenessAndCertificatesThatContradictTheResultAreBadOutput)
       replaced(replaced(w.line, "\"status\":\"solved\"", "\"status\":\"unhandled\""),
                "\"message\":\"\"", "\"message\":\"why\"");
   const std::size_t from = unhandled.find("\"branches\":[") + 12, to = unhandled.find("],\"best\"");
-  const std::string no_branches = replaced(unhandled.substr(0, from) + "[" + unhandled.substr(to),
-                                           "\"best\":0", "\"best\":null");
+  const std::string no_branches =
+      replaced(unhandled.substr(0, from) + unhandled.substr(to), "\"best\":0", "\"best\":null");
   EXPECT_TRUE(flagged(no_branches));
   EXPECT_FALSE(flagged(replaced(no_branches, "\"complete\":true", "\"complete\":false")));
 }

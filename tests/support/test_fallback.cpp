@@ -44,11 +44,31 @@ bool answer(const Problem& problem, const Registry&, const Tolerance&, Solution&
   return true;
 }
 
+// Every item of the built-ins but a numeric stage, into `to` (not frozen).
+void addRules(Registry& to) {
+  Registry from;
+  registerBuiltins(from);
+  for (const ConstraintType& t : from.constraintTypes()) to.addConstraintType(t);
+  for (const RuleInfo& r : from.rules()) to.addRule(r);
+  for (const ManifoldInfo& m : from.manifolds()) to.addManifold(m);
+  for (const MatcherInfo& m : from.matchers()) to.addMatcher(m);
+}
+
 }  // namespace
+
+const Registry& rulesOnlyRegistry() {
+  static const Registry registry = [] {
+    Registry r;
+    addRules(r);
+    r.freeze();
+    return r;
+  }();
+  return registry;
+}
 
 Registry builtinsWithFallback(const TestFallback& stage) {
   Registry r;
-  registerBuiltins(r);
+  addRules(r);
   r.setFallback({"test-stage", &answer, &stage});
   r.freeze();
   return r;

@@ -19,7 +19,10 @@ struct TestFallback {
   mutable int calls = 0;                     // how often the solver called it
 };
 
-// The built-in registry with `stage` registered as the numeric stage (named "test-stage").
+// The built-ins' rules alone (every constraint type, rule, manifold and matcher, no numeric
+// stage, whether or not registerBuiltins adds one), frozen: what "the rules' answer" means.
+const Registry& rulesOnlyRegistry();
+// Those with `stage` registered as the numeric stage (named "test-stage").
 Registry builtinsWithFallback(const TestFallback& stage);
 
 // Six point-point distances between three fixed and three mobile points (a 3-3 platform), measured

@@ -36,7 +36,7 @@ Problem pointsTooFarApart() {
 }
 
 TEST(Complete, TrueForWhatTheRulesSolveOrProveInconsistent) {
-  const Solution solved = solve(pointOnPoint(), builtinRegistry());
+  const Solution solved = solve(pointOnPoint(), rulesOnlyRegistry());
   ASSERT_EQ(solved.status, Status::kSolved) << solved.message;
   EXPECT_TRUE(solved.complete);
   for (const Branch& b : solved.branches) {
@@ -44,13 +44,13 @@ TEST(Complete, TrueForWhatTheRulesSolveOrProveInconsistent) {
     EXPECT_EQ(b.certified.radius, 0.0);
     EXPECT_EQ(b.certified.angle, 0.0);
   }
-  const Solution none = solve(pointsTooFarApart(), builtinRegistry());
+  const Solution none = solve(pointsTooFarApart(), rulesOnlyRegistry());
   ASSERT_EQ(none.status, Status::kInconsistent) << none.message;
   EXPECT_TRUE(none.complete);
 }
 
 TEST(Complete, FalseForWhatTheRulesLeaveUnhandled) {
-  const Solution s = solve(platformProblem(platformPose()), builtinRegistry());
+  const Solution s = solve(platformProblem(platformPose()), rulesOnlyRegistry());
   ASSERT_EQ(s.status, Status::kUnhandled) << describeBranches(s);
   EXPECT_FALSE(s.complete);
   EXPECT_FALSE(s.message.empty());
@@ -59,11 +59,11 @@ TEST(Complete, FalseForWhatTheRulesLeaveUnhandled) {
 TEST(Complete, AReusedSolutionStartsIncomplete) {
   Workspace ws;
   Solution s;
-  solve(pointOnPoint(), builtinRegistry(), SolverOptions(), ws, s);
+  solve(pointOnPoint(), rulesOnlyRegistry(), SolverOptions(), ws, s);
   ASSERT_TRUE(s.complete);
   s.clear();
   EXPECT_FALSE(s.complete);
-  solve(platformProblem(platformPose()), builtinRegistry(), SolverOptions(), ws, s);
+  solve(platformProblem(platformPose()), rulesOnlyRegistry(), SolverOptions(), ws, s);
   EXPECT_FALSE(s.complete);
 }
 
@@ -118,7 +118,7 @@ TEST(Fallback, AProvenInconsistencyIsCompleteAndNamesTheConstraints) {
 
 TEST(Fallback, AThrowLeavesTheRulesAnswerWithTheReason) {
   const Problem p = platformProblem(platformPose());
-  const Solution rules = solve(p, builtinRegistry());
+  const Solution rules = solve(p, rulesOnlyRegistry());
   TestFallback stage;
   stage.answer = TestFallback::Answer::kThrow;
   const Solution s = solve(p, builtinsWithFallback(stage));
@@ -133,7 +133,7 @@ TEST(Fallback, AThrowLeavesTheRulesAnswerWithTheReason) {
 
 TEST(Fallback, ADeclineKeepsTheRulesReasonAndAddsItsOwn) {
   const Problem p = platformProblem(platformPose());
-  const Solution rules = solve(p, builtinRegistry());
+  const Solution rules = solve(p, rulesOnlyRegistry());
   TestFallback stage;
   stage.answer = TestFallback::Answer::kDecline;
   const Solution s = solve(p, builtinsWithFallback(stage));
