@@ -8,6 +8,8 @@
 
 #include "evaluator.hpp"
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/core/branch_sink.hpp"
+#include "relpos/manifolds/separable.hpp"
 #include "solve_helpers.hpp"
 #include "test_fallback.hpp"
 
@@ -65,6 +67,34 @@ TEST(Complete, AReusedSolutionStartsIncomplete) {
   EXPECT_FALSE(s.complete);
   solve(platformProblem(platformPose()), rulesOnlyRegistry(), SolverOptions(), ws, s);
   EXPECT_FALSE(s.complete);
+}
+
+// A plugin's matcher that marks its branch certified: only the numeric stage certifies.
+MatchResult certifyingMatcher(MatchContext& ctx, const void*) {
+  Branch b;
+  b.manifold.emplace<manifolds::SeparableManifold>(
+      manifolds::rotation::Fixed(Matrix3d::Identity()),
+      manifolds::translation::Point(
+          Fundamental::pointPoint(Vector3d::Zero(), Vector3d(1, 2, 3), 0.0, 1)));
+  b.exact = false;
+  b.certified = {1e-12, 0.0};
+  return ctx.branches.add(b) ? MatchResult::kMatched : MatchResult::kOverflow;
+}
+
+TEST(Complete, APluginsMatcherCannotCertify) {
+  Registry r;
+  for (const ConstraintType& t : rulesOnlyRegistry().constraintTypes()) r.addConstraintType(t);
+  r.setOrigin("/plugins/certifies.so", false);
+  r.addMatcher({"certifies", &certifyingMatcher});
+  r.clearOrigin();
+  r.freeze();
+  const Solution s = solve(pointOnPoint(), r);
+  EXPECT_EQ(s.status, Status::kUnhandled);
+  EXPECT_FALSE(s.complete);
+  EXPECT_NE(s.message.find("from matcher 'certifies' (plugin /plugins/certifies.so) is unusable: "
+                           "a matcher's branch is not exact"),
+            std::string::npos)
+      << s.message;
 }
 
 TEST(Fallback, IsNotCalledForWhatTheRulesAnswer) {

@@ -168,7 +168,9 @@ struct CustomKindInfo {
 // (Branch::exact false, Branch::certified its proof) — and `complete` from its proof, or
 // kInconsistent only when proven (conflicts and message saying which and why). Returns false
 // when it could not: the rules' answer stands (a message it set is added to theirs). Its answer
-// goes through the same last check as the rules'.
+// goes through the same last check as the rules'. (To run the rules on a part of the problem it
+// may call solveConstraintSet, which never calls the fallback; solve() with this registry would
+// call it again.)
 using FallbackFn = bool (*)(const Problem& problem, const Registry& registry, const Tolerance& tol,
                             Solution& solution, const void* context);
 struct FallbackInfo {
