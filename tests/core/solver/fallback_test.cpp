@@ -146,32 +146,30 @@ TEST(Fallback, AProvenInconsistencyIsCompleteAndNamesTheConstraints) {
   EXPECT_NE(s.message.find("test-stage"), std::string::npos) << s.message;
 }
 
-TEST(Fallback, AThrowLeavesTheRulesAnswerWithTheReason) {
+// A stage that throws, or declines with a reason of its own: the rules' answer stands, their reason
+// first.
+TEST(Fallback, AThrowOrADeclineLeavesTheRulesAnswerWithTheReason) {
   const Problem p = platformProblem(platformPose());
   const Solution rules = solve(p, rulesOnlyRegistry());
-  TestFallback stage;
-  stage.answer = TestFallback::Answer::kThrow;
-  const Solution s = solve(p, builtinsWithFallback(stage));
-  EXPECT_EQ(stage.calls, 1);
-  EXPECT_EQ(s.status, Status::kUnhandled);
-  EXPECT_FALSE(s.complete);
-  EXPECT_TRUE(s.branches.empty());
-  EXPECT_EQ(s.message, rules.message +
-                           "; the numeric stage 'test-stage' (built-in) threw: the tracker lost a "
-                           "path");
-}
-
-TEST(Fallback, ADeclineKeepsTheRulesReasonAndAddsItsOwn) {
-  const Problem p = platformProblem(platformPose());
-  const Solution rules = solve(p, rulesOnlyRegistry());
-  TestFallback stage;
-  stage.answer = TestFallback::Answer::kDecline;
-  const Solution s = solve(p, builtinsWithFallback(stage));
-  EXPECT_EQ(s.status, Status::kUnhandled);
-  EXPECT_FALSE(s.complete);
-  EXPECT_EQ(
-      s.message,
-      rules.message + "; the numeric stage 'test-stage' (built-in): 3 of 40 roots not certified");
+  const struct {
+    TestFallback::Answer answer;
+    std::string added;
+  } cases[] = {
+      {TestFallback::Answer::kThrow,
+       "; the numeric stage 'test-stage' (built-in) threw: the tracker lost a path"},
+      {TestFallback::Answer::kDecline,
+       "; the numeric stage 'test-stage' (built-in): 3 of 40 roots not certified"},
+  };
+  for (const auto& c : cases) {
+    TestFallback stage;
+    stage.answer = c.answer;
+    const Solution s = solve(p, builtinsWithFallback(stage));
+    EXPECT_EQ(stage.calls, 1);
+    EXPECT_EQ(s.status, Status::kUnhandled);
+    EXPECT_FALSE(s.complete);
+    EXPECT_TRUE(s.branches.empty());
+    EXPECT_EQ(s.message, rules.message + c.added);
+  }
 }
 
 TEST(Fallback, ACertificateThatIsNotANumberIsRefused) {
