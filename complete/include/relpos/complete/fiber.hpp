@@ -6,6 +6,7 @@
 // Deterministic: the same family, target and options give the same roots in the same order, on
 // every run and thread count.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,6 +19,13 @@ namespace relpos::complete {
 struct StartSystem {
   std::vector<Complex> params;         // parameterCount()
   std::vector<Eigen::VectorXcd> roots;  // all of its isolated roots (the family's root count)
+  // How the count was checked (added for issue 15's engine): "monodromy" (K loops found nothing
+  // new), "monodromy+total-degree" (the Bézout homotopy found no root monodromy had missed, or
+  // added the ones it had: see total_degree_added), and the loops run.
+  std::string check;
+  int monodromy_loops = 0;
+  int total_degree_paths = 0;  // 0: the Bézout number was above the limit, not run
+  int total_degree_added = 0;
 };
 
 // The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
