@@ -167,11 +167,15 @@ TEST(SolveFiber, StewartPlatformIsCompleteWithTheKnownPoseCertifiedReal) {
   const Eigen::VectorXcd x = poseVector(pose);
   ASSERT_EQ(boxesHolding(res, x), 1);
   for (const auto& r : res.roots) {
-    if (inBox(r, x)) EXPECT_TRUE(r.real);
+    if (inBox(r, x)) {
+      EXPECT_TRUE(r.real);
+    }
   }
   // A real root's conjugate is itself; a complex root's conjugate is a root too: in the list.
   for (const auto& r : res.roots) {
-    if (!r.real) EXPECT_EQ(boxesHolding(res, r.x.conjugate()), 1);
+    if (!r.real) {
+      EXPECT_EQ(boxesHolding(res, r.x.conjugate()), 1);
+    }
   }
 }
 
