@@ -4,13 +4,14 @@
 // same root (a count too low only ever says "not complete"). Missing roots: all paths again with
 // another γ. N pairwise disjoint certified boxes, N the family's root count, prove the list
 // complete (a member has at most N isolated roots: Morgan & Sommese 1989).
+#include "relpos/complete/fiber.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include "homotopy.hpp"
 #include "krawczyk.hpp"
 #include "random.hpp"
-#include "relpos/complete/fiber.hpp"
 
 namespace relpos::complete {
 namespace {

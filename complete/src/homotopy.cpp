@@ -1,9 +1,8 @@
 #include "homotopy.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/LU>
 
 #include "random.hpp"
 
@@ -63,7 +62,8 @@ CoefficientPolynomials interpolateSegment(const Family& f, const Complex* p0, co
   for (int t = 0; t < out.terms; ++t)
     for (int j = 0; j < m; ++j) {
       Complex s(0.0, 0.0);
-      for (int k = 0; k < m; ++k) s += Vinv(j, k) * values[static_cast<std::size_t>(k) * out.terms + t];
+      for (int k = 0; k < m; ++k)
+        s += Vinv(j, k) * values[static_cast<std::size_t>(k) * out.terms + t];
       out.a[static_cast<std::size_t>(t) * m + j] = s;
     }
   return out;
@@ -109,26 +109,36 @@ void Tracker::coefficientsAt(double s) {
 bool Tracker::velocity(const CVec& x, double s, CVec& v) {
   coefficientsAt(s);
   evaluate(shape_, c_.data(), dc_.data(), x, scratch_, f_, &J_, &fs_);
-  Eigen::PartialPivLU<CMat> lu(J_);
-  v = -lu.solve(fs_);
+  if (!lu_.factor(J_)) return false;
+  lu_.solve(fs_, v);
+  v = -v;
   return finite(v);
 }
 
-double Tracker::newton(CVec& x, const Complex* c) {
-  evaluate(shape_, c, nullptr, x, scratch_, f_, &J_, nullptr);
-  Eigen::PartialPivLU<CMat> lu(J_);
-  const CVec d = lu.solve(f_);
-  if (!finite(d)) return -1.0;
-  x -= d;
-  return normInf(d);
+double Tracker::newton(CVec& x, double s, CVec* v) {
+  coefficientsAt(s);
+  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, f_, &J_, v ? &fs_ : nullptr);
+  if (!lu_.factor(J_)) return -1.0;
+  lu_.solve(f_, d_);
+  if (!finite(d_)) return -1.0;
+  if (v) {
+    lu_.solve(fs_, *v);
+    *v = -*v;
+  }
+  x -= d_;
+  return normInf(d_);
 }
 
 PathEnd Tracker::track(const CVec& start) {
   PathEnd end;
   const int n = shape_.variables();
-  CVec x = start, y(n), k1(n), k2(n), k3(n), k4(n);
+  CVec x = start, y(n), k1(n), k2(n), k3(n), k4(n), k1_next(n);
   const double limit = options_.divergence * (1.0 + normInf(start));
   double s = 0.0, h = options_.initial_step;
+  if (!velocity(x, s, k1)) {
+    end.x = x;
+    return end;
+  }
   while (s < 1.0) {
     if (end.steps >= options_.max_steps) {
       end.x = x;
@@ -136,28 +146,27 @@ PathEnd Tracker::track(const CVec& start) {
     }
     const double hh = std::min(h, 1.0 - s);
     const double s1 = (hh == 1.0 - s) ? 1.0 : s + hh;
-    bool ok = velocity(x, s, k1) && velocity(x + (0.5 * hh) * k1, s + 0.5 * hh, k2) &&
-              velocity(x + (0.5 * hh) * k2, s + 0.5 * hh, k3) &&
-              velocity(x + hh * k3, s1, k4);
+    // RK4; k1 is the velocity at x carried over from the last corrector.
+    bool ok = velocity(x + (0.5 * hh) * k1, s + 0.5 * hh, k2) &&
+              velocity(x + (0.5 * hh) * k2, s + 0.5 * hh, k3) && velocity(x + hh * k3, s1, k4);
     double e1 = 0.0;
     if (ok) {
       y = x + (hh / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-      coefficientsAt(s1);
       const double scale = 1.0 + normInf(y);
-      e1 = newton(y, c_.data()) / scale;
+      e1 = newton(y, s1, &k1_next) / scale;
       ok = e1 >= 0.0 && e1 <= options_.max_error;
-      // Newton must contract quadratically from a good prediction; a slow second step means
-      // the prediction sits between paths.
-      if (ok && e1 > 1e-12) {
-        const double e2 = newton(y, c_.data()) / scale;
-        ok = e2 >= 0.0 && e2 <= std::max(0.1 * e1, 1e-13);
-        if (ok && e2 > 1e-11) ok = newton(y, c_.data()) >= 0.0;
+      // A large first correction must be followed by a much smaller one (Newton contracting
+      // quadratically from inside the path's basin, not sitting between two paths).
+      if (ok && e1 > options_.confirm_error) {
+        const double e2 = newton(y, s1, &k1_next) / scale;
+        ok = e2 >= 0.0 && e2 <= 0.1 * e1;
       }
     }
     ++end.steps;
     if (ok) {
       x = y;
       s = s1;
+      k1 = k1_next;
       const double grow = e1 > 0.0 ? 0.9 * std::pow(options_.target_error / e1, 0.2) : 3.0;
       h = std::min(options_.max_step, hh * std::clamp(grow, 0.3, 3.0));
       if (normInf(x) > limit) {
@@ -170,7 +179,7 @@ PathEnd Tracker::track(const CVec& start) {
       if (h < options_.min_step) {
         end.x = x;
         end.status = normInf(x) > 1e4 * (1.0 + normInf(start)) ? PathStatus::kAtInfinity
-                                                                 : PathStatus::kFailed;
+                                                               : PathStatus::kFailed;
         return end;
       }
     }
@@ -189,11 +198,12 @@ double polish(const CompiledShape& shape, const Complex* c, CVec& x, EvalScratch
   double last = -1.0;
   for (int it = 0; it < iterations; ++it) {
     evaluate(shape, c, nullptr, x, scratch, f, &J, nullptr);
-    Eigen::PartialPivLU<CMat> lu(J);
-    const CVec d = lu.solve(f);
+    SmallLU lu;
+    CVec d(n);
+    if (!lu.factor(J)) return -1.0;
+    lu.solve(f, d);
     if (!finite(d)) return -1.0;
-    CVec xn = x - d;
-    x = xn;
+    x -= d;
     last = normInf(d) / (1.0 + normInf(x));
     if (last < 1e-15) break;
   }

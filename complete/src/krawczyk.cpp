@@ -1,9 +1,8 @@
 #include "krawczyk.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/LU>
 
 namespace relpos::complete::detail {
 namespace {
@@ -23,7 +22,9 @@ struct ComplexBox {
   explicit ComplexBox(double v) : re(v), im(0.0) {}
   ComplexBox(const FI& r, const FI& i) : re(r), im(i) {}
 };
-ComplexBox operator+(const ComplexBox& a, const ComplexBox& b) { return {a.re + b.re, a.im + b.im}; }
+ComplexBox operator+(const ComplexBox& a, const ComplexBox& b) {
+  return {a.re + b.re, a.im + b.im};
+}
 ComplexBox operator*(const ComplexBox& a, const ComplexBox& b) {
   return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
 }
@@ -109,8 +110,7 @@ struct Certifier::Impl {
       a[i] = {re, im};
     }
     const FI rad(-r, r);
-    for (int i = 0; i < n; ++i)
-      cx[i] = ComplexBox(FI(y[i].real()) + rad, FI(y[i].imag()) + rad);
+    for (int i = 0; i < n; ++i) cx[i] = ComplexBox(FI(y[i].real()) + rad, FI(y[i].imag()) + rad);
     evalComplexMember(true);  // J over the box
     for (int i = 0; i < n; ++i) {
       // Row i of M = I − Y J(X); M_ij · ([−r, r] + i[−r, r]) ⊂ (|Re M_ij| + |Im M_ij|) r (1 + i)

@@ -3,17 +3,17 @@
 // tracker's inner loop), and enclosures over interval boxes (the Krawczyk test). Every monomial of
 // the shape, and every monomial its partial derivatives need, is a node of one product tree
 // (node = parent · x_var), evaluated once per point and shared by all equations.
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "relpos/complete/family.hpp"
 
 namespace relpos::complete::detail {
 
 using CVec = Eigen::Matrix<Complex, Eigen::Dynamic, 1, 0, kMaxVariables, 1>;
-using CMat = Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxVariables, kMaxVariables>;
+using CMat =
+    Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxVariables, kMaxVariables>;
 using RVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxVariables, 1>;
 using RMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxVariables, kMaxVariables>;
 
@@ -47,6 +47,17 @@ class CompiledShape {
   const std::vector<std::uint16_t>& termNode() const { return term_node_; }
   const std::vector<std::uint16_t>& termEquation() const { return term_equation_; }
   const std::vector<Partial>& partials() const { return partials_; }
+  // The terms ordered by equation, and the partials by (equation, var): each run of equal keys
+  // sums in a register and is written once (accumulating in place serialises on the store).
+  struct Run {
+    std::uint16_t equation = 0;
+    std::uint8_t var = 0;
+    std::uint32_t begin = 0, end = 0;
+  };
+  const std::vector<std::uint32_t>& termOrder() const { return term_order_; }
+  const std::vector<Run>& termRuns() const { return term_runs_; }
+  const std::vector<Partial>& sortedPartials() const { return sorted_partials_; }
+  const std::vector<Run>& partialRuns() const { return partial_runs_; }
   // Largest monomial degree of each equation (total-degree start systems, Bézout number).
   const std::vector<int>& equationDegrees() const { return degrees_; }
 
@@ -57,6 +68,10 @@ class CompiledShape {
   std::vector<std::uint16_t> term_equation_;
   std::vector<Partial> partials_;
   std::vector<int> degrees_;
+  std::vector<std::uint32_t> term_order_;
+  std::vector<Run> term_runs_;
+  std::vector<Partial> sorted_partials_;
+  std::vector<Run> partial_runs_;
 };
 
 // Scratch for evaluate(): one per tracker, sized once (no allocation per evaluation).

@@ -36,7 +36,9 @@ double normInf(const CVec& x) {
 class RootSet {
  public:
   RootSet(const detail::CompiledShape& shape, const Complex* coefficients)
-      : shape_(shape), coefficients_(coefficients), certifier_(shape, coefficients),
+      : shape_(shape),
+        coefficients_(coefficients),
+        certifier_(shape, coefficients),
         scratch_(shape) {}
 
   // Polishes and certifies x; adds it unless it is a root already known. True if added.
@@ -129,7 +131,8 @@ std::unique_ptr<StartSystem> compute(const Family& f) {
   const std::uint64_t bezout = detail::bezoutNumber(shape);
   if (bezout > 0 && bezout <= kMaxBezout) {
     const std::size_t before = set.roots().size();
-    for (const CVec& e : detail::totalDegreeEndpoints(f.shape(), c0.data(), detail::mixSeed(seed, 2)))
+    for (const CVec& e :
+         detail::totalDegreeEndpoints(f.shape(), c0.data(), detail::mixSeed(seed, 2)))
       set.add(e);
     out->total_degree_paths = static_cast<int>(bezout);
     out->total_degree_added = static_cast<int>(set.roots().size() - before);

@@ -32,8 +32,8 @@ std::vector<CVec> totalDegreeEndpoints(const SystemShape& shape, const Complex* 
     power.degree = static_cast<std::uint8_t>(degrees[k]);
     for (int j = 0; j < degrees[k]; ++j) power.vars[j] = static_cast<std::uint8_t>(k);
     combined.monomials.push_back(power);
-    combined.terms.push_back({static_cast<std::uint16_t>(k),
-                              static_cast<std::uint16_t>(combined.monomials.size() - 1)});
+    combined.terms.push_back(
+        {static_cast<std::uint16_t>(k), static_cast<std::uint16_t>(combined.monomials.size() - 1)});
     combined.terms.push_back({static_cast<std::uint16_t>(k), one});
   }
   const CompiledShape compiled(combined);

@@ -158,8 +158,7 @@ TEST(SolveFiber, StewartPlatformIsCompleteWithTheKnownPoseCertifiedReal) {
   const FiberResult res = solveFiber(kStewart, target);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("solveFiber(Stewart 6-6): %.2f ms (first call includes nothing but the fiber)\n",
-              ms);
+  std::printf("solveFiber(Stewart 6-6): %.2f ms (first call includes nothing but the fiber)\n", ms);
   EXPECT_EQ(res.root_count, 40);
   EXPECT_TRUE(res.complete);
   EXPECT_EQ(res.roots.size(), 40u);

@@ -1,13 +1,12 @@
 // Start systems by monodromy, checked against the families' known generic root counts (Bézout
 // for two conics; 40 for the general Stewart–Gough platform: Raghavan 1993, Wampler 1996).
-#include "relpos/complete/fiber.hpp"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 
 #include "polynomial_eval.hpp"
+#include "relpos/complete/fiber.hpp"
 #include "test_families.hpp"
 
 namespace relpos::complete {

@@ -138,9 +138,8 @@ void ConicFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root)
 StewartFamily::StewartFamily() {
   shape_.variables = 8;
   std::vector<Complex> p(46, Complex(1.0, 0.0));
-  stewartTerms<Complex>(p.data(), [&](int eq, const Monomial& m, const Complex&) {
-    addTerm(shape_, eq, m);
-  });
+  stewartTerms<Complex>(p.data(),
+                        [&](int eq, const Monomial& m, const Complex&) { addTerm(shape_, eq, m); });
 }
 
 void StewartFamily::coefficients(const Complex* params, Complex* coeffs) const {

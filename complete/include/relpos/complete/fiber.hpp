@@ -5,11 +5,10 @@
 // count of distinct certified roots equal to the family's root count proves the list complete.
 // Deterministic: the same family, target and options give the same roots in the same order, on
 // every run and thread count.
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "relpos/complete/family.hpp"
 
@@ -17,7 +16,7 @@ namespace relpos::complete {
 
 // The roots of a generic complex member (the start of every homotopy in its family).
 struct StartSystem {
-  std::vector<Complex> params;         // parameterCount()
+  std::vector<Complex> params;          // parameterCount()
   std::vector<Eigen::VectorXcd> roots;  // all of its isolated roots (the family's root count)
   // How the count was checked (added for issue 15's engine): "monodromy" (K loops found nothing
   // new), "monodromy+total-degree" (the Bézout homotopy found no root monodromy had missed, or
