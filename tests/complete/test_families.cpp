@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <utility>
 
 namespace relpos::complete::testing {
 namespace {
@@ -135,7 +136,7 @@ void ConicFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root)
   }
 }
 
-StewartFamily::StewartFamily() {
+StewartFamily::StewartFamily(std::string signature) : signature_(std::move(signature)) {
   shape_.variables = 8;
   std::vector<Complex> p(46, Complex(1.0, 0.0));
   stewartTerms<Complex>(p.data(),
