@@ -25,17 +25,29 @@ bool finite(const CVec& x) {
 }  // namespace
 
 void CoefficientPolynomials::evaluate(Complex tau, Complex* c, Complex* dc) const {
+  // Horner for the value and the derivative together, on raw doubles (see evaluate()).
   const int m = degree + 1;
+  const double tr = tau.real(), ti = tau.imag();
+  const double* av = reinterpret_cast<const double*>(a.data());
+  double* cv = reinterpret_cast<double*>(c);
+  double* dv = reinterpret_cast<double*>(dc);
   for (int t = 0; t < terms; ++t) {
-    const Complex* at = a.data() + static_cast<std::size_t>(t) * m;
-    // Horner for the value and the derivative together.
-    Complex v = at[degree], d(0.0, 0.0);
+    const double* at = av + 2 * static_cast<std::size_t>(t) * m;
+    double vr = at[2 * degree], vi = at[2 * degree + 1], dr = 0.0, di = 0.0;
     for (int j = degree - 1; j >= 0; --j) {
-      d = mul(d, tau) + v;
-      v = mul(v, tau) + at[j];
+      const double ndr = dr * tr - di * ti + vr, ndi = dr * ti + di * tr + vi;
+      dr = ndr;
+      di = ndi;
+      const double nvr = vr * tr - vi * ti + at[2 * j], nvi = vr * ti + vi * tr + at[2 * j + 1];
+      vr = nvr;
+      vi = nvi;
     }
-    c[t] = v;
-    if (dc) dc[t] = d;
+    cv[2 * t] = vr;
+    cv[2 * t + 1] = vi;
+    if (dc) {
+      dv[2 * t] = dr;
+      dv[2 * t + 1] = di;
+    }
   }
 }
 
@@ -102,7 +114,12 @@ void Tracker::coefficientsAt(double s) {
   if (s == s_cached_) return;
   poly_.evaluate(arc_.tau(s), c_.data(), dc_.data());
   const Complex dt = arc_.dtau(s);
-  for (auto& d : dc_) d = mul(d, dt);
+  double* dv = reinterpret_cast<double*>(dc_.data());
+  for (std::size_t t = 0; t < dc_.size(); ++t) {
+    const double re = dv[2 * t] * dt.real() - dv[2 * t + 1] * dt.imag();
+    dv[2 * t + 1] = dv[2 * t] * dt.imag() + dv[2 * t + 1] * dt.real();
+    dv[2 * t] = re;
+  }
   s_cached_ = s;
 }
 

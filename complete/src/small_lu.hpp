@@ -14,25 +14,48 @@ class SmallLU {
   bool factor(const CMat& a) {
     lu_ = a;
     n_ = static_cast<int>(a.rows());
-    for (int k = 0; k < n_; ++k) {
+    const int n = n_;
+    // Column-major storage: column k's multipliers, then each later column updated in one
+    // contiguous sweep.
+    double* m = reinterpret_cast<double*>(lu_.data());
+    auto at = [&](int i, int j) { return m + 2 * (i + j * n); };
+    for (int k = 0; k < n; ++k) {
       int p = k;
       double best = -1.0;
-      for (int i = k; i < n_; ++i) {
-        const double m = std::abs(lu_(i, k).real()) + std::abs(lu_(i, k).imag());
-        if (m > best) {
-          best = m;
+      for (int i = k; i < n; ++i) {
+        const double* z = at(i, k);
+        const double v = std::abs(z[0]) + std::abs(z[1]);
+        if (v > best) {
+          best = v;
           p = i;
         }
       }
       if (!(best > 0.0) || !std::isfinite(best)) return false;
       perm_[k] = p;
-      if (p != k) lu_.row(k).swap(lu_.row(p));
-      const Complex inv = recip(lu_(k, k));
-      inv_diag_[k] = inv;
-      for (int i = k + 1; i < n_; ++i) {
-        const Complex l = mul(lu_(i, k), inv);
-        lu_(i, k) = l;
-        for (int j = k + 1; j < n_; ++j) lu_(i, j) -= mul(l, lu_(k, j));
+      if (p != k)
+        for (int j = 0; j < n; ++j) {
+          std::swap(at(k, j)[0], at(p, j)[0]);
+          std::swap(at(k, j)[1], at(p, j)[1]);
+        }
+      const double* d = at(k, k);
+      const double dd = d[0] * d[0] + d[1] * d[1];
+      const double ir = d[0] / dd, ii = -d[1] / dd;
+      inv_diag_[k] = Complex(ir, ii);
+      for (int i = k + 1; i < n; ++i) {
+        double* z = at(i, k);
+        const double r = z[0] * ir - z[1] * ii, q = z[0] * ii + z[1] * ir;
+        z[0] = r;
+        z[1] = q;
+      }
+      for (int j = k + 1; j < n; ++j) {
+        const double* u = at(k, j);
+        const double ur = u[0], ui = u[1];
+        const double* l = at(0, k);
+        double* col = at(0, j);
+        for (int i = k + 1; i < n; ++i) {
+          col[2 * i] -= l[2 * i] * ur - l[2 * i + 1] * ui;
+          col[2 * i + 1] -= l[2 * i] * ui + l[2 * i + 1] * ur;
+        }
       }
     }
     return true;
@@ -55,10 +78,6 @@ class SmallLU {
   }
 
  private:
-  static Complex recip(const Complex& z) {
-    const double d = z.real() * z.real() + z.imag() * z.imag();
-    return {z.real() / d, -z.imag() / d};
-  }
   CMat lu_;
   int n_ = 0;
   int perm_[kMaxVariables] = {};
