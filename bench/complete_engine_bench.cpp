@@ -3,8 +3,6 @@
 // and certification apart, and startSystem (monodromy + total-degree check) on a fresh signature.
 #include <benchmark/benchmark.h>
 
-#include <random>
-
 #include "homotopy.hpp"
 #include "krawczyk.hpp"
 #include "random.hpp"
@@ -20,27 +18,9 @@ const testing::StewartFamily& family() {
   return f;
 }
 
-// A random real platform around a random pose (as in tests/complete/fiber_test.cpp).
 std::vector<double> target(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   testing::StewartPose pose;
-  double eg = 0.0, ee = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    pose.e[k] = u(rng);
-    pose.g[k] = u(rng);
-  }
-  for (int k = 0; k < 4; ++k) {
-    eg += pose.e[k] * pose.g[k];
-    ee += pose.e[k] * pose.e[k];
-  }
-  for (int k = 0; k < 4; ++k) pose.g[k] -= eg / ee * pose.e[k];
-  std::array<std::array<double, 3>, 6> a{}, b{};
-  for (auto& v : a)
-    for (auto& w : v) w = 2.0 * u(rng);
-  for (auto& v : b)
-    for (auto& w : v) w = u(rng);
-  return testing::stewartMemberAround(pose, a, b, {u(rng), u(rng), 1.5, u(rng)});
+  return testing::randomStewartMember(seed, pose);
 }
 
 void BM_SolveFiberStewart(benchmark::State& state) {

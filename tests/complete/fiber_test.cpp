@@ -181,26 +181,9 @@ TEST(SolveFiber, StewartPlatformIsCompleteWithTheKnownPoseCertifiedReal) {
 // A general pose (rotation and translation not dyadic): the known pose is within rounding of a
 // certified root.
 TEST(SolveFiber, StewartPlatformWithAGeneralPose) {
-  std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 3; ++trial) {
     testing::StewartPose pose;
-    double eg = 0.0, ee = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      pose.e[k] = u(rng);
-      pose.g[k] = u(rng);
-    }
-    for (int k = 0; k < 4; ++k) {
-      eg += pose.e[k] * pose.g[k];
-      ee += pose.e[k] * pose.e[k];
-    }
-    for (int k = 0; k < 4; ++k) pose.g[k] -= eg / ee * pose.e[k];
-    std::array<std::array<double, 3>, 6> a{}, b{};
-    for (auto& v : a)
-      for (auto& w : v) w = 2.0 * u(rng);
-    for (auto& v : b)
-      for (auto& w : v) w = u(rng);
-    const auto target = testing::stewartMemberAround(pose, a, b, {u(rng), u(rng), 1.5, u(rng)});
+    const auto target = testing::randomStewartMember(23 + trial, pose);
     const FiberResult res = solveFiber(kStewart, target);
     EXPECT_TRUE(res.complete) << "trial " << trial;
     expectDisjoint(res);

@@ -216,4 +216,25 @@ std::vector<double> stewartMemberAround(const StewartPose& pose,
   return p;
 }
 
+std::vector<double> randomStewartMember(std::uint64_t seed, StewartPose& pose) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < 4; ++k) {
+    pose.e[k] = u(rng);
+    pose.g[k] = u(rng);
+  }
+  double eg = 0.0, ee = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    eg += pose.e[k] * pose.g[k];
+    ee += pose.e[k] * pose.e[k];
+  }
+  for (int k = 0; k < 4; ++k) pose.g[k] -= eg / ee * pose.e[k];  // Study quadric
+  std::array<std::array<double, 3>, 6> a{}, b{};
+  for (auto& v : a)
+    for (auto& w : v) w = 2.0 * u(rng);
+  for (auto& v : b)
+    for (auto& w : v) w = u(rng);
+  return stewartMemberAround(pose, a, b, {u(rng), u(rng), 1.5, u(rng)});
+}
+
 }  // namespace relpos::complete::testing

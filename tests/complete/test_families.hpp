@@ -58,4 +58,8 @@ std::vector<double> stewartMemberAround(const StewartPose& pose,
                                         const std::array<std::array<double, 3>, 6>& b,
                                         const std::array<double, 4>& c_raw);
 
+// A random real platform (anchors a in [−2, 2]³, b in [−1, 1]³) around a random real pose, which
+// it returns in `pose`; the same for the same seed.
+std::vector<double> randomStewartMember(std::uint64_t seed, StewartPose& pose);
+
 }  // namespace relpos::complete::testing
