@@ -5,10 +5,10 @@
 // count of distinct certified roots equal to the family's root count proves the list complete.
 // Deterministic: the same family, target and options give the same roots in the same order, on
 // every run and thread count.
-#include <cstdint>
-#include <vector>
-
 #include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "relpos/complete/family.hpp"
 
@@ -16,8 +16,15 @@ namespace relpos::complete {
 
 // The roots of a generic complex member (the start of every homotopy in its family).
 struct StartSystem {
-  std::vector<Complex> params;         // parameterCount()
+  std::vector<Complex> params;          // parameterCount()
   std::vector<Eigen::VectorXcd> roots;  // all of its isolated roots (the family's root count)
+  // How the count was checked (added for issue 15's engine): "monodromy" (K loops found nothing
+  // new), "monodromy+total-degree" (the Bézout homotopy found no root monodromy had missed, or
+  // added the ones it had: see total_degree_added), and the loops run.
+  std::string check;
+  int monodromy_loops = 0;
+  int total_degree_paths = 0;  // 0: the Bézout number was above the limit, not run
+  int total_degree_added = 0;
 };
 
 // The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
