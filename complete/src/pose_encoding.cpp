@@ -54,7 +54,7 @@ class PoseEncoder {
   void pointPoint(const Vector3d& a, const Vector3d& b, double d) {
     if (d != 0.0) return push(K::kPointPoint, fixedPoint(a), mobilePoint(b), -1, d * d);
     for (int k = 0; k < 3; ++k)  // p = a: on three planes through a
-      push(K::kPointPlane, slots_.unique(Vector3d::Unit(k)), mobilePoint(b), -1, a[k]);
+      push(K::kPointPlane, fixedDirection(Vector3d::Unit(k)), mobilePoint(b), -1, a[k]);
   }
   // Mobile point b at signed distance d from fixed plane (a, n).
   void mobilePointPlane(const Vector3d& b, const Vector3d& a, const Vector3d& n, double d) {
@@ -71,7 +71,7 @@ class PoseEncoder {
     Vector3d n[2];
     detail::normalsAcross(u, &n[0], &n[1]);
     for (const Vector3d& nk : n)
-      push(K::kPointPlane, slots_.unique(nk), mobilePoint(b), -1, nk.dot(a));
+      push(K::kPointPlane, fixedDirection(nk), mobilePoint(b), -1, nk.dot(a));
   }
   // Fixed point a at distance d from mobile line (b, m).
   void fixedPointLine(const Vector3d& a, const Vector3d& b, const Vector3d& m, double d) {
@@ -80,20 +80,36 @@ class PoseEncoder {
     Vector3d n[2];
     detail::normalsAcross(m, &n[0], &n[1]);
     for (const Vector3d& nk : n)
-      push(K::kPlanePoint, fixedPoint(a), slots_.unique(nk), -1, nk.dot(b));
+      push(K::kPlanePoint, fixedPoint(a), mobileDirection(nk), -1, nk.dot(b));
   }
   // u · R m = κ.
   void direction(const Vector3d& u, const Vector3d& m, double kappa) {
     push(K::kDirection, fixedDirection(u), mobileDirection(m), -1, kappa);
   }
   // R m ∥ u per orientation: R m on two planes through u, and the sign checked on the roots.
+  // Their normals are the ones a point on the line (u) is put on (mobilePointLine, d = 0) with:
+  // shared, so that every member keeps the slide along the line a coincidence leaves.
   void parallel(const Vector3d& u, const Vector3d& m, Orientation o) {
     Vector3d n[2];
     detail::normalsAcross(u, &n[0], &n[1]);
     for (const Vector3d& nk : n)
-      push(K::kDirection, slots_.unique(nk), mobileDirection(m), -1, 0.0);
+      push(K::kDirection, fixedDirection(nk), mobileDirection(m), -1, 0.0);
     if (o != Orientation::kEither)
       out_->signs.push_back({u, m, o == Orientation::kAligned ? 1.0 : -1.0});
+  }
+
+  // Parallel planes, the mobile one at signed distance v along the fixed normal n = σ R m
+  // (σ = ±1 per orientation). Read in the mobile frame, m·Rᵀ(a − t) = m·b − σ v, so that its
+  // normal is the parallelism's in every member: the fixed normal, independent of R m in a
+  // generic member, would turn the position's equation with the spin (and lose roots).
+  bool planeOnPlane(const Feature& F, const Feature& M, Orientation o, double v) {
+    if (o == Orientation::kEither && v != 0.0)
+      return refuse("a plane-plane distance with orientation 'either' is not encoded");
+    parallel(F.direction, M.direction, o);
+    const double sigma = o == Orientation::kOpposed ? -1.0 : 1.0;
+    push(K::kPlanePoint, fixedPoint(F.point), mobileDirection(M.direction), -1,
+         M.direction.dot(M.point) - sigma * v);
+    return true;
   }
 
   PoseEncoding* out_;
@@ -120,7 +136,10 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
     if (f == FK::kLine && m == FK::kLine) {
       if (!c.parallel) return refuse("a skew line-line distance is not encoded");
       parallel(F.direction, M.direction, c.orientation);
-      return mobilePointLine(M.point, F.point, F.direction, v), true;
+      // Read at the mobile line (its direction is the parallelism's): every member keeps the
+      // lines parallel; a distance 0 is the coincidence's planes through the fixed line.
+      if (v == 0.0) return mobilePointLine(M.point, F.point, F.direction, 0.0), true;
+      return fixedPointLine(F.point, M.point, M.direction, v), true;
     }
     if (f == FK::kLine && m == FK::kPlane) {
       direction(F.direction, M.direction, 0.0);
@@ -130,10 +149,7 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
       direction(F.direction, M.direction, 0.0);
       return mobilePointPlane(M.point, F.point, F.direction, v), true;
     }
-    if (f == FK::kPlane && m == FK::kPlane) {
-      parallel(F.direction, M.direction, c.orientation);
-      return mobilePointPlane(M.point, F.point, F.direction, v), true;
-    }
+    if (f == FK::kPlane && m == FK::kPlane) return planeOnPlane(F, M, c.orientation, v);
   } else if (c.type == "angle") {
     if (same) {  // arccos(u·R m) = v; 0 and π are parallelisms (u·R m = ±1 is a double root)
       if (v == 0.0 || v == kPi)
@@ -166,10 +182,7 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
       parallel(F.direction, M.direction, c.orientation);
       return mobilePointLine(M.point, F.point, F.direction, 0.0), true;
     }
-    if (f == FK::kPlane && m == FK::kPlane) {
-      parallel(F.direction, M.direction, c.orientation);
-      return mobilePointPlane(M.point, F.point, F.direction, 0.0), true;
-    }
+    if (f == FK::kPlane && m == FK::kPlane) return planeOnPlane(F, M, c.orientation, 0.0);
     if (f == FK::kLine && m == FK::kPlane) {
       direction(F.direction, M.direction, 0.0);
       return fixedPointPlane(F.point, M.point, M.direction, 0.0), true;
@@ -187,7 +200,7 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
   } else if (c.type == "tangent") {
     if (f == FK::kCylinder && m == FK::kCylinder) {
       parallel(F.direction, M.direction, Orientation::kEither);
-      return mobilePointLine(M.point, F.point, F.direction, F.radius + M.radius), true;
+      return fixedPointLine(F.point, M.point, M.direction, F.radius + M.radius), true;
     }
     if ((f == FK::kCylinder && m == FK::kPlane) || (f == FK::kPlane && m == FK::kCylinder)) {
       if (c.orientation == Orientation::kEither)
@@ -232,6 +245,13 @@ bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::strin
     }
   }
   const int n = static_cast<int>(out->equations.size()) - 2;
+  int rotational = 0;  // equations on the rotation alone
+  for (const PoseEquation& q : out->equations) rotational += q.kind == K::kDirection;
+  if (n == 6 && rotational > 3) {
+    *why = std::to_string(rotational) + " equations on the rotation alone (3 unknowns) and 6 - " +
+           std::to_string(rotational) + " on the position: not isolated poses";
+    return false;
+  }
   if (n != 6) {
     *why = "the constraints give " + std::to_string(n) +
            " equations on the pose (6 unknowns): " + (n < 6 ? "a set of poses" : "overdetermined") +

@@ -62,6 +62,9 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
 // complete; the real ones go to `accept` (which says whether each is a solution).
 template <typename Accept>
 void collect(const FiberResult& fiber, Answer& a, Accept accept) {
+  // A family without isolated roots: the encoding's roots are not isolated (a set of poses),
+  // and an empty list proves nothing.
+  if (fiber.root_count <= 0) return doubt(a, "the family has no isolated roots");
   if (!fiber.complete)
     doubt(a, std::to_string(fiber.roots.size()) + " of the family's " +
                  std::to_string(fiber.root_count) + " roots certified");

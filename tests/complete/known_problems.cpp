@@ -111,7 +111,7 @@ Problem mixed(int k, std::mt19937_64& rng, const Isometry3d& X) {
                       pointLineDistance(a3, X * m3.point, R * m3.direction));
       break;
     }
-    case 2: {  // a parallelism (2), signed distances both ways, a line-plane angle, perpendicular
+    case 2: {  // a parallelism (2), signed distances both ways, a line-plane angle, a distance
       const Vector3d m = randomVector(rng).normalized();
       p.addMobileFeature("m", Feature::makeLine(randomVector(rng), m));
       p.addFixedFeature("L", Feature::makeLine(randomVector(rng), R * m));
@@ -125,11 +125,8 @@ Problem mixed(int k, std::mt19937_64& rng, const Isometry3d& X) {
       const Feature l = fixedDir("L2", false);
       const Feature q2 = mobileDir("Q2", true);
       p.addConstraint("angle", "L2", "Q2", std::asin(l.direction.dot(R * q2.direction)));
-      // A fixed plane normal to R n for a mobile plane (perpendicular: n_f · R n_m = 0).
-      const Feature q3 = mobileDir("Q3", true);
-      const Vector3d nf = (R * q3.direction).cross(randomVector(rng)).normalized();
-      p.addFixedFeature("P3", Feature::makePlane(randomVector(rng), nf));
-      p.addConstraint("perpendicular", "P3", "Q3");
+      const Vector3d a4 = fixedPoint("A4"), b4 = mobilePoint("b4");
+      p.addConstraint("distance", "A4", "b4", (X * b4 - a4).norm());
       break;
     }
     case 3: {  // coplanar planes, opposed (3), a point on a fixed line (2), a distance
