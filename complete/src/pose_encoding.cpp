@@ -22,7 +22,8 @@ const Eigen::Vector4d kCharts[2] = {Eigen::Vector4d(0.8147, -0.4567, 0.6324, 0.3
 
 class PoseEncoder {
  public:
-  PoseEncoder(PoseEncoding* out, std::string* why) : out_(out), why_(why), slots_(&out->target) {}
+  PoseEncoder(PoseEncoding* out, std::string* why, unsigned alternative)
+      : alternative_(alternative), out_(out), why_(why), slots_(&out->target) {}
 
   void chart(const Eigen::Vector4d& c) {
     PoseEquation q{K::kChart, -1, -1, -1, slots_.size()};
@@ -103,8 +104,7 @@ class PoseEncoder {
   // normal is the parallelism's in every member: the fixed normal, independent of R m in a
   // generic member, would turn the position's equation with the spin (and lose roots).
   bool planeOnPlane(const Feature& F, const Feature& M, Orientation o, double v) {
-    if (o == Orientation::kEither && v != 0.0)
-      return refuse("a plane-plane distance with orientation 'either' is not encoded");
+    if (o == Orientation::kEither && v != 0.0) o = choose();  // two subproblems
     parallel(F.direction, M.direction, o);
     const double sigma = o == Orientation::kOpposed ? -1.0 : 1.0;
     push(K::kPlanePoint, fixedPoint(F.point), mobileDirection(M.direction), -1,
@@ -112,6 +112,14 @@ class PoseEncoder {
     return true;
   }
 
+  // The orientation of the next constraint with two (an "either" that changes the equations):
+  // bit k of the encoding's `alternative` for the k-th such constraint.
+  Orientation choose() {
+    const int k = out_->alternatives++;
+    return k < 32 && (alternative_ >> k) & 1u ? Orientation::kOpposed : Orientation::kAligned;
+  }
+
+  unsigned alternative_;
   PoseEncoding* out_;
   std::string* why_;
   Slots slots_;
@@ -203,11 +211,10 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
       return fixedPointLine(F.point, M.point, M.direction, F.radius + M.radius), true;
     }
     if ((f == FK::kCylinder && m == FK::kPlane) || (f == FK::kPlane && m == FK::kCylinder)) {
-      if (c.orientation == Orientation::kEither)
-        return refuse("a cylinder-plane tangency with orientation 'either' is not encoded");
       // The axis at signed distance −r (aligned) or +r (opposed) from the plane.
+      const Orientation o = c.orientation == Orientation::kEither ? choose() : c.orientation;
       const double r = f == FK::kCylinder ? F.radius : M.radius;
-      const double d = c.orientation == Orientation::kAligned ? -r : r;
+      const double d = o == Orientation::kAligned ? -r : r;
       direction(F.direction, M.direction, 0.0);
       if (f == FK::kPlane) return mobilePointPlane(M.point, F.point, F.direction, d), true;
       return fixedPointPlane(F.point, M.point, M.direction, d), true;
@@ -220,11 +227,13 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
 
 }  // namespace
 
-bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::string* why) {
+bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::string* why,
+                unsigned alternative) {
   *out = PoseEncoding{};
+  out->alternative = alternative;
   out->frames = detail::normalisationOf(problem);
   out->chart = kCharts[chart == 0 ? 0 : 1];
-  PoseEncoder encoder(out, why);
+  PoseEncoder encoder(out, why, alternative);
   encoder.chart(out->chart);
   for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
     const InputConstraint& c = problem.constraints[i];

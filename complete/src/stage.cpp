@@ -77,26 +77,24 @@ void collect(const FiberResult& fiber, Answer& a, Accept accept) {
   }
 }
 
-FiberResult bestFiber(const Family& f, const std::vector<double>& target) {
-  return solveFiber(f, target);
-}
-
-bool solvePose(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
-               StageReport& report, std::string* why) {
+// One subproblem (an orientation for each "either" that changes the equations).
+bool solvePoseAlternative(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                          unsigned alternative, Answer& a, StageReport& report, std::string* why) {
   PoseEncoding enc;
   FiberResult fiber;
   // A second chart when the first loses roots (a pose with c·e = 0 is at infinity in it).
   for (int chart = 0; chart < 2; ++chart) {
     PoseEncoding e;
-    if (!encodePose(problem, chart, &e, why)) return false;
+    if (!encodePose(problem, chart, &e, why, alternative)) return false;
     const PoseFamily family(e.equations, static_cast<int>(e.target.size()));
-    FiberResult r = bestFiber(family, e.target);
-    report.signature = family.signature();
+    FiberResult r = solveFiber(family, e.target);
+    if (chart == 0)
+      report.signature += (report.signature.empty() ? "" : " | ") + family.signature();
     if (chart == 0 || r.roots.size() > fiber.roots.size()) fiber = std::move(r), enc = e;
     if (fiber.complete) break;
   }
-  report.root_count = fiber.root_count;
-  report.roots_found = static_cast<int>(fiber.roots.size());
+  report.root_count += fiber.root_count;
+  report.roots_found += static_cast<int>(fiber.roots.size());
   const SourceMask sources = allSources(problem);
   collect(fiber, a, [&](const CertifiedRoot& r) {
     ++report.real_roots;
@@ -126,6 +124,21 @@ bool solvePose(const Problem& problem, const Registry& registry, const Tolerance
   return true;
 }
 
+// Every subproblem; the list is complete only if each is.
+bool solvePose(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
+               StageReport& report, std::string* why) {
+  PoseEncoding first;
+  if (!encodePose(problem, 0, &first, why)) return false;
+  if (first.alternatives > 3) {
+    *why = std::to_string(first.alternatives) +
+           " constraints with orientation 'either' that change the equations (at most 3)";
+    return false;
+  }
+  for (unsigned alternative = 0; alternative < (1u << first.alternatives); ++alternative)
+    if (!solvePoseAlternative(problem, registry, tol, alternative, a, report, why)) return false;
+  return true;
+}
+
 // The branch of every pose that puts the mobile line on the world line (point, direction): the
 // rules' own coincident line-line (a spin about it and a slide along it).
 bool lineBranch(const Registry& registry, const Problem& problem, const LineEncoding& enc,
@@ -148,7 +161,7 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
   if (!encodeLine(problem, tol, &enc, why)) return false;
   const LineFamily family(enc.equations, static_cast<int>(enc.target.size()));
   report.signature = family.signature();
-  const FiberResult fiber = bestFiber(family, enc.target);
+  const FiberResult fiber = solveFiber(family, enc.target);
   report.root_count = fiber.root_count;
   report.roots_found = static_cast<int>(fiber.roots.size());
   const SourceMask sources = allSources(problem);

@@ -143,6 +143,22 @@ Problem mixed(int k, std::mt19937_64& rng, const Isometry3d& X) {
       p.addConstraint("distance", "A", "b2", (X * b2 - a).norm());
       break;
     }
+    case 5: {  // 'either' that changes the equations: a plane-plane distance (true: opposed)
+      // and a cylinder-plane tangency (true: aligned), two subproblems each; a distance
+      const Feature q = mobileDir("Q", true);
+      const Vector3d nf = -(R * q.direction);
+      p.addFixedFeature("P", Feature::makePlane(X * q.point - 0.3 * nf, nf));
+      p.addConstraint("distance", "P", "Q", 0.3, Orientation::kEither);
+      const Feature axis = mobileDir("Caxis", false);
+      p.addMobileFeature("C", Feature::makeCylinder(axis.point, axis.direction, 0.25));
+      const Vector3d n2 = (R * axis.direction).cross(randomVector(rng)).normalized();
+      // The axis 0.25 behind the plane (its normal points away from the axis): aligned.
+      p.addFixedFeature("P2", Feature::makePlane(X * axis.point + 0.25 * n2, n2));
+      p.addConstraint("tangent", "P2", "C", 0.0, Orientation::kEither);
+      const Vector3d a = fixedPoint("A"), b = mobilePoint("b");
+      p.addConstraint("distance", "A", "b", (X * b - a).norm());
+      break;
+    }
     default: {  // a line-line distance (parallel, 3), a point on a cylinder, a line in a plane (2)
       const Feature m = mobileDir("m", false);
       const Vector3d off = (R * m.direction).cross(randomVector(rng)).normalized();

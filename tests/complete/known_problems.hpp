@@ -16,7 +16,7 @@ Problem sixSix(std::mt19937_64& rng, const Isometry3d& X);
 // 3 fixed and 3 mobile points, leg i from A_i to B_i and B_{i+1} (the octahedral manipulator).
 Problem octahedral(std::mt19937_64& rng, const Isometry3d& X);
 // The mixed problems: each gives 6 equations of other kinds (k = 0 … kMixedProblems − 1).
-inline constexpr int kMixedProblems = 5;
+inline constexpr int kMixedProblems = 6;
 Problem mixed(int k, std::mt19937_64& rng, const Isometry3d& X);
 
 // Four fixed points and a mobile line (along z through the mobile origin), the distances of the

@@ -29,6 +29,11 @@ struct PoseEncoding {
   Normalisation frames;
   Eigen::Vector4d chart = Eigen::Vector4d::Ones();
   std::vector<SignCheck> signs;
+  // Constraints whose "either" orientation changes the equations (a plane-plane distance, a
+  // cylinder-plane tangency) make 2^alternatives subproblems; this one is `alternative` (bit k:
+  // the k-th such constraint opposed).
+  int alternatives = 0;
+  unsigned alternative = 0;
 };
 
 struct LineEncoding {
@@ -49,7 +54,8 @@ bool mobileFeaturesOnOneLine(const Problem& problem, const Tolerance& tol);
 // range, a plugin's type, a skew line distance, a tangent to a line, …) or the equations are
 // not as many as the unknowns (6 for a pose, 4 for a line). chart picks the chart c·e = 1 (0, 1:
 // two fixed random real charts, the second for a retry).
-bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::string* why);
+bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::string* why,
+                unsigned alternative = 0);
 bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out, std::string* why);
 
 }  // namespace relpos::complete
