@@ -41,7 +41,11 @@ TEST(Stage, SixSixPlatformHasItsFortyRootsAndTheTruePose) {
   std::mt19937_64 rng(31);
   for (int trial = 0; trial < 3; ++trial) {
     const Isometry3d X = randomPose(rng);
-    const Problem p = test::sixSix(rng, X);
+    Problem p = test::sixSix(rng, X);
+    if (trial == 2) {  // a fixed frame of its own: the fixed points are placed by it
+      p.fixed.pose = randomPose(rng);
+      for (InputConstraint& c : p.constraints) c.fixed = c.fixed.placed(p.fixed.pose.inverse());
+    }
     Solution s;
     StageReport r;
     ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
@@ -101,6 +105,38 @@ TEST(Stage, FourSpheresGiveTwelveLinesEachBothWays) {
     const Vector3d dir = Y.linear() * Vector3d::UnitZ();
     const Vector3d at = Y.translation();
     if ((dir - w).norm() < 1e-8 && (at - q).cross(w).norm() < 1e-8) found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+// A line at given angles to two fixed lines and given distances from two fixed points.
+TEST(Stage, ALineAtTwoAnglesAndTwoDistances) {
+  std::mt19937_64 rng(38);
+  const Vector3d w = randomVector(rng).normalized(), q = 0.3 * randomVector(rng);
+  Problem p;
+  p.addMobileFeature("axis", Feature::makeLine(Vector3d(0.1, 0.2, 0.3), -Vector3d::UnitZ()));
+  p.addMobileFeature("axis2", Feature::makeLine(Vector3d(0.1, 0.2, 1.3), Vector3d::UnitZ()));
+  for (int i = 0; i < 2; ++i) {
+    const Vector3d a = randomVector(rng), u = randomVector(rng).normalized();
+    p.addFixedFeature("L" + std::to_string(i), Feature::makeLine(a, u));
+    // The mobile line's direction is -w for "axis" (its direction is -z): arccos(u·(-w)).
+    p.addConstraint("angle", "L" + std::to_string(i), i == 0 ? "axis" : "axis2",
+                    std::acos(u.dot(i == 0 ? -w : w)));
+    const Vector3d s = 2.0 * randomVector(rng);
+    p.addFixedFeature("S" + std::to_string(i), Feature::makePoint(s));
+    p.addConstraint("distance", "S" + std::to_string(i), "axis2", (s - q).cross(w).norm());
+  }
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_TRUE(r.complete) << r.roots_found << " of " << r.root_count;
+  bool found = false;
+  for (const Branch& b : s.branches) {
+    EXPECT_EQ(b.manifold->dof(), 2);
+    const Isometry3d Y = b.manifold->pose(referenceParams(*b.manifold));
+    const Vector3d dir = Y.linear() * Vector3d::UnitZ();
+    if ((dir - w).norm() < 1e-8 && (Y * Vector3d(0.1, 0.2, 0.3) - q).cross(w).norm() < 1e-8)
+      found = true;
   }
   EXPECT_TRUE(found);
 }
