@@ -1,0 +1,38 @@
+#pragma once
+// The numeric stage's glue (issue 15, docs/spec.md §8): a problem the rules left unhandled,
+// encoded (problem_encoding.hpp), solved by coefficient-parameter homotopy (fiber.hpp), and
+// answered with one certified branch per proven-real root that meets every input constraint.
+#include <string>
+#include <vector>
+
+#include "relpos/core/problem.hpp"
+#include "relpos/core/registry.hpp"
+#include "relpos/core/solution.hpp"
+#include "relpos/core/tolerance.hpp"
+
+namespace relpos::complete {
+
+// What proves each branch and the list (mirrors Branch::certified and Solution::complete).
+struct StageReport {
+  struct Certificate {
+    double radius = 0.0;  // position, problem units
+    double angle = 0.0;   // rotation (a line's direction), radians
+  };
+  std::vector<Certificate> certificates;  // per branch of the solution
+  bool complete = false;                  // every root of the family certified
+  int root_count = 0;                     // the family's
+  int roots_found = 0;                    // distinct certified roots
+  int real_roots = 0;                     // proven real
+  std::string signature;                  // the family's
+};
+
+// Applies when every constraint is a built-in type with an exact value that the encodings take
+// and they give as many equations as unknowns (6 for a pose; 4 for a line, when every mobile
+// feature lies on one line). Then: solved with the certified branches (0-DOF poses, or a line's
+// 2-DOF spin and slide), or inconsistent when all roots were found and none is a solution
+// (complete), and true. Otherwise false, with the reason in solution.message and nothing else
+// of the solution changed.
+bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                   Solution& solution, StageReport* report = nullptr);
+
+}  // namespace relpos::complete

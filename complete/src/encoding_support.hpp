@@ -1,0 +1,53 @@
+#pragma once
+// What the pose and line encoders share (pose_encoding.cpp, line_encoding.cpp): the frames the
+// problem is normalised to, the parameter slots (a feature's coordinates shared by every
+// equation on it), and the constraints' features placed and normalised.
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "relpos/complete/study.hpp"
+#include "relpos/core/problem.hpp"
+
+namespace relpos::complete::detail {
+
+// The middle of each side's box of constrained support points, and the longest of the boxes'
+// diagonals and the length values (1 when all are 0).
+Normalisation normalisationOf(const Problem& problem);
+
+// One constraint's features in the normalised frames: fixed ones placed in the world by the
+// fixed pose, both moved and scaled; directions unchanged.
+struct NormalisedConstraint {
+  Feature fixed, mobile;
+  double value = 0.0;  // a length scaled, an angle as given
+};
+NormalisedConstraint normalised(const Problem& problem, const InputConstraint& c,
+                                const Normalisation& n);
+
+// Parameter slots. Equal coordinates of one side and role (point or direction) share a slot:
+// two legs on one point, a plane's normal in two equations. The sharing pattern is part of the
+// family's signature (slots are numbered in order of first use).
+class Slots {
+ public:
+  enum Side : char { kFixed = 'F', kMobile = 'M' };
+  enum Role : char { kPoint = 'p', kDirection = 'd' };
+  explicit Slots(std::vector<double>* params) : params_(params) {}
+  int shared(Side side, Role role, const Vector3d& v);
+  int unique(const Vector3d& v);
+  int value(double v);
+  int size() const { return static_cast<int>(params_->size()); }
+
+ private:
+  std::vector<double>* params_;
+  std::map<std::tuple<char, char, double, double, double>, int> shared_;
+};
+
+// Two unit vectors completing unit u to an orthonormal basis (the normals of two planes meeting
+// in a line along u).
+void normalsAcross(const Vector3d& u, Vector3d* n1, Vector3d* n2);
+
+// Whether the constraint type is a built-in one this stage encodes (with its exact value).
+bool isEncodedType(const std::string& type);
+
+}  // namespace relpos::complete::detail

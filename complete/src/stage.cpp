@@ -1,0 +1,241 @@
+// solveComplete (stage.hpp): encode, solve the fiber, turn the proven-real roots into branches,
+// check each against every input constraint, and say whether the list is proven complete.
+#include "relpos/complete/stage.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "relpos/complete/fiber.hpp"
+#include "relpos/complete/problem_encoding.hpp"
+#include "relpos/core/solver.hpp"
+#include "relpos/manifolds/rotation/fixed.hpp"
+#include "relpos/manifolds/separable.hpp"
+#include "relpos/manifolds/translation/point.hpp"
+
+namespace relpos::complete {
+namespace {
+
+// The last check's bound (docs/spec.md §6.5): a branch breaking a constraint by more is ours to
+// drop, never to return.
+constexpr double kCheckTolerances = 10.0;
+
+struct Answer {
+  std::vector<Branch> branches;
+  std::vector<StageReport::Certificate> certificates;
+  bool proven = true;  // no root lost, none undecided
+  std::string doubt;   // why not, when not
+};
+
+SourceMask allSources(const Problem& p) {
+  const std::size_t n = p.constraints.size();
+  return n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
+}
+
+void doubt(Answer& a, std::string why) {
+  if (a.proven) a.doubt = std::move(why);
+  a.proven = false;
+}
+
+// Whether a root's box reaches the real space (|Im x_i| ≤ radius everywhere): its root might be
+// real even though the real test failed.
+bool mayBeReal(const CertifiedRoot& r) {
+  for (int i = 0; i < r.x.size(); ++i)
+    if (std::abs(r.x[i].imag()) > r.radius) return false;
+  return true;
+}
+
+// The worst violation of any input constraint at pose X, in tolerances (infinity: unknown).
+double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                      const Isometry3d& X) {
+  double worst = 0.0;
+  for (const InputConstraint& c : problem.constraints) {
+    const ConstraintType* t = registry.constraintType(c.type);
+    if (!t || !t->violation) return std::numeric_limits<double>::infinity();
+    const double v =
+        t->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X), tol, t->context);
+    if (!(v <= worst)) worst = std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+  }
+  return worst;
+}
+
+// Every root the fiber certified: the non-real ones must be proven non-real for the list to be
+// complete; the real ones go to `accept` (which says whether each is a solution).
+template <typename Accept>
+void collect(const FiberResult& fiber, Answer& a, Accept accept) {
+  // A family without isolated roots: the encoding's roots are not isolated (a set of poses),
+  // and an empty list proves nothing.
+  if (fiber.root_count <= 0) return doubt(a, "the family has no isolated roots");
+  if (!fiber.complete)
+    doubt(a, std::to_string(fiber.roots.size()) + " of the family's " +
+                 std::to_string(fiber.root_count) + " roots certified");
+  for (const CertifiedRoot& r : fiber.roots) {
+    if (!r.real) {
+      if (mayBeReal(r)) doubt(a, "a root neither proven real nor proven complex");
+      continue;
+    }
+    accept(r);
+  }
+}
+
+// One subproblem (an orientation for each "either" that changes the equations).
+bool solvePoseAlternative(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                          unsigned alternative, Answer& a, StageReport& report, std::string* why) {
+  PoseEncoding enc;
+  FiberResult fiber;
+  // A second chart when the first loses roots (a pose with c·e = 0 is at infinity in it).
+  for (int chart = 0; chart < 2; ++chart) {
+    PoseEncoding e;
+    if (!encodePose(problem, chart, &e, why, alternative)) return false;
+    const PoseFamily family(e.equations, static_cast<int>(e.target.size()));
+    FiberResult r = solveFiber(family, e.target);
+    if (chart == 0)
+      report.signature += (report.signature.empty() ? "" : " | ") + family.signature();
+    if (chart == 0 || r.roots.size() > fiber.roots.size()) fiber = std::move(r), enc = e;
+    if (fiber.complete) break;
+  }
+  report.root_count += fiber.root_count;
+  report.roots_found += static_cast<int>(fiber.roots.size());
+  const SourceMask sources = allSources(problem);
+  collect(fiber, a, [&](const CertifiedRoot& r) {
+    ++report.real_roots;
+    Vector8d x;
+    for (int i = 0; i < 8; ++i) x[i] = r.x[i].real();
+    PoseEnclosure pe;
+    if (!enclosePose(x, r.radius, enc.frames, &pe))
+      return doubt(a, "a real root's box holds no pose (e = 0)");
+    for (const SignCheck& s : enc.signs) {
+      const double along = s.fixed.dot(pe.pose.linear() * s.mobile);
+      if (std::abs(along) < 0.5) return doubt(a, "a parallelism's orientation undecided");
+      if (s.sign * along < 0.0) return;  // a root of the equations, the other orientation
+    }
+    const double v = worstViolation(problem, registry, tol, pe.pose);
+    if (!(v <= kCheckTolerances))
+      return doubt(
+          a, "a certified real root breaks a constraint by " + std::to_string(v) + " tolerances");
+    Branch b;
+    b.manifold.emplace<manifolds::SeparableManifold>(
+        manifolds::rotation::Fixed(pe.pose.linear()),
+        manifolds::translation::Point(
+            Fundamental::pointPoint(Vector3d::Zero(), pe.pose.translation(), 0.0, sources)));
+    b.sources = sources;
+    a.branches.push_back(std::move(b));
+    a.certificates.push_back({pe.radius, pe.angle});
+  });
+  return true;
+}
+
+// Every subproblem; the list is complete only if each is.
+bool solvePose(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
+               StageReport& report, std::string* why) {
+  PoseEncoding first;
+  if (!encodePose(problem, 0, &first, why)) return false;
+  if (first.alternatives > 3) {
+    *why = std::to_string(first.alternatives) +
+           " constraints with orientation 'either' that change the equations (at most 3)";
+    return false;
+  }
+  for (unsigned alternative = 0; alternative < (1u << first.alternatives); ++alternative)
+    if (!solvePoseAlternative(problem, registry, tol, alternative, a, report, why)) return false;
+  return true;
+}
+
+// The branch of every pose that puts the mobile line on the world line (point, direction): the
+// rules' own coincident line-line (a spin about it and a slide along it).
+bool lineBranch(const Registry& registry, const Problem& problem, const LineEncoding& enc,
+                const LineEnclosure& line, Branch* out) {
+  Problem aux;
+  aux.name = problem.name;
+  aux.mobile.pose = problem.mobile.pose;
+  aux.addFixedFeature("line", Feature::makeLine(line.point, line.direction));
+  aux.addMobileFeature("line", Feature::makeLine(enc.mobile_point, enc.mobile_direction));
+  aux.addConstraint("coincident", "line", "line");
+  Solution s = solve(aux, registry);
+  if (s.status != Status::kSolved || s.branches.size() != 1) return false;
+  *out = s.branches[0];
+  return true;
+}
+
+bool solveLine(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
+               StageReport& report, std::string* why) {
+  LineEncoding enc;
+  if (!encodeLine(problem, tol, &enc, why)) return false;
+  const LineFamily family(enc.equations, static_cast<int>(enc.target.size()));
+  report.signature = family.signature();
+  const FiberResult fiber = solveFiber(family, enc.target);
+  report.root_count = fiber.root_count;
+  report.roots_found = static_cast<int>(fiber.roots.size());
+  const SourceMask sources = allSources(problem);
+  collect(fiber, a, [&](const CertifiedRoot& r) {
+    ++report.real_roots;
+    Eigen::Matrix<double, 6, 1> x;
+    for (int i = 0; i < 6; ++i) x[i] = r.x[i].real();
+    LineEnclosure le;
+    if (!encloseLine(x, r.radius, enc.frames, &le))
+      return doubt(a, "a real root's box holds no direction");
+    for (const SignCheck& s : enc.signs) {
+      const double along = s.fixed.dot(s.mobile.dot(enc.mobile_direction) * le.direction);
+      if (std::abs(along) < 0.5) return doubt(a, "a parallelism's orientation undecided");
+      if (s.sign * along < 0.0) return;
+    }
+    Branch b;
+    if (!lineBranch(registry, problem, enc, le, &b))
+      return doubt(a, "the rules did not solve the line's coincidence");
+    const Manifold& m = *b.manifold;
+    const double v = worstViolation(problem, registry, tol, m.pose(referenceParams(m)));
+    if (!(v <= kCheckTolerances))
+      return doubt(
+          a, "a certified real line breaks a constraint by " + std::to_string(v) + " tolerances");
+    b.sources = sources;
+    a.branches.push_back(std::move(b));
+    a.certificates.push_back({le.radius, le.angle});
+  });
+  return true;
+}
+
+bool decline(Solution& solution, const std::string& why) {
+  solution.message = why;
+  return false;
+}
+
+}  // namespace
+
+bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                   Solution& solution, StageReport* report) {
+  StageReport local;
+  StageReport& rep = report ? *report : local;
+  rep = StageReport{};
+  if (problem.constraints.empty()) return decline(solution, "no constraints");
+  for (const InputConstraint& c : problem.constraints) {
+    const ConstraintType* t = registry.constraintType(c.type);
+    if (!t || t->origin != "built-in")
+      return decline(solution, "constraint type '" + c.type + "' is not a built-in one");
+  }
+  Answer a;
+  std::string why;
+  const bool line = mobileFeaturesOnOneLine(problem, tol);
+  const bool encoded = line ? solveLine(problem, registry, tol, a, rep, &why)
+                            : solvePose(problem, registry, tol, a, rep, &why);
+  if (!encoded) return decline(solution, why);
+  rep.complete = a.proven;
+  if (a.branches.empty()) {
+    if (!a.proven)
+      return decline(solution, "no solution among the roots found, and not proven: " + a.doubt);
+    solution.branches.clear();
+    solution.status = Status::kInconsistent;
+    solution.conflicts.clear();
+    for (std::size_t i = 0; i < problem.constraints.size(); ++i)
+      solution.conflicts.push_back(static_cast<int>(i));
+    solution.message = "no pose satisfies the constraints: all " + std::to_string(rep.root_count) +
+                       " solutions of their polynomial encoding found and certified, none a real "
+                       "pose that meets them";
+    return true;
+  }
+  solution.branches = std::move(a.branches);
+  rep.certificates = std::move(a.certificates);
+  solution.status = Status::kSolved;
+  solution.conflicts.clear();
+  solution.message.clear();
+  return true;
+}
+
+}  // namespace relpos::complete

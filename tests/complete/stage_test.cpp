@@ -1,0 +1,191 @@
+// The numeric stage end to end (complete/stage.hpp): problems built around a known pose (a 6-6
+// platform, the octahedral manipulator, mixed kinds, the four spheres) are solved with every
+// root of their family certified, the known pose among the branches; a problem no pose meets is
+// proven inconsistent; a scaled and moved copy gives the same poses, mapped.
+#include "relpos/complete/stage.hpp"
+
+#include <gtest/gtest.h>
+
+#include "known_problems.hpp"
+#include "relpos/builtins/builtins.hpp"
+
+namespace relpos::complete {
+namespace {
+
+using test::randomPose;
+using test::randomVector;
+
+Tolerance toleranceOf(const Problem& p) { return Tolerance::forScale(2.0 * p.lengthScale()); }
+
+// The branch whose pose (at its reference parameters) is nearest X, and how near.
+double nearestBranch(const Solution& s, const Isometry3d& X) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Branch& b : s.branches) {
+    const Isometry3d Y = b.manifold->pose(referenceParams(*b.manifold));
+    best = std::min(best, poseDistance(X, Y));
+  }
+  return best;
+}
+
+void expectCertificates(const Solution& s, const StageReport& r) {
+  ASSERT_EQ(r.certificates.size(), s.branches.size());
+  for (const auto& c : r.certificates) {
+    EXPECT_GE(c.radius, 0.0);
+    EXPECT_GE(c.angle, 0.0);
+    EXPECT_LT(c.radius, 1e-6);
+    EXPECT_LT(c.angle, 1e-6);
+  }
+}
+
+TEST(Stage, SixSixPlatformHasItsFortyRootsAndTheTruePose) {
+  std::mt19937_64 rng(31);
+  for (int trial = 0; trial < 3; ++trial) {
+    const Isometry3d X = randomPose(rng);
+    Problem p = test::sixSix(rng, X);
+    if (trial == 2) {  // a fixed frame of its own: the fixed points are placed by it
+      p.fixed.pose = randomPose(rng);
+      for (InputConstraint& c : p.constraints) c.fixed = c.fixed.placed(p.fixed.pose.inverse());
+    }
+    Solution s;
+    StageReport r;
+    ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+    EXPECT_EQ(s.status, Status::kSolved);
+    EXPECT_EQ(r.root_count, 40);
+    EXPECT_TRUE(r.complete) << r.roots_found << " of " << r.root_count;
+    EXPECT_EQ(static_cast<int>(s.branches.size()), r.real_roots);
+    EXPECT_EQ(r.real_roots % 2, 0);  // complex roots come in conjugate pairs: 40 − real is even
+    EXPECT_LT(nearestBranch(s, X), 1e-8);
+    expectCertificates(s, r);
+    for (const Branch& b : s.branches) EXPECT_EQ(b.manifold->dof(), 0);
+  }
+}
+
+TEST(Stage, OctahedralManipulatorIsItsOwnSixteenRootFamily) {
+  std::mt19937_64 rng(32);
+  const Isometry3d X = randomPose(rng);
+  const Problem p = test::octahedral(rng, X);
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(r.root_count, 16);
+  EXPECT_TRUE(r.complete);
+  EXPECT_LT(nearestBranch(s, X), 1e-8);
+  expectCertificates(s, r);
+}
+
+TEST(Stage, MixedKindsFindTheTruePose) {
+  std::mt19937_64 rng(33);
+  for (int k = 0; k < test::kMixedProblems; ++k) {
+    const Isometry3d X = randomPose(rng);
+    const Problem p = test::mixed(k, rng, X);
+    Solution s;
+    StageReport r;
+    ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r))
+        << p.name << ": " << s.message;
+    EXPECT_TRUE(r.complete) << p.name << ": " << r.roots_found << " of " << r.root_count;
+    EXPECT_LT(nearestBranch(s, X), 1e-8) << p.name;
+    expectCertificates(s, r);
+  }
+}
+
+TEST(Stage, FourSpheresGiveTwelveLinesEachBothWays) {
+  std::mt19937_64 rng(34);
+  const Vector3d w = randomVector(rng).normalized(), q = 0.3 * randomVector(rng);
+  const Problem p = test::fourSpheres(rng, q, w);
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(r.root_count, 24);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.real_roots % 2, 0);
+  bool found = false;
+  for (const Branch& b : s.branches) {
+    EXPECT_EQ(b.manifold->dof(), 2);  // the spin about the line and the slide along it
+    const Isometry3d Y = b.manifold->pose(referenceParams(*b.manifold));
+    const Vector3d dir = Y.linear() * Vector3d::UnitZ();
+    const Vector3d at = Y.translation();
+    if ((dir - w).norm() < 1e-8 && (at - q).cross(w).norm() < 1e-8) found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+// A line at given angles to two fixed lines and given distances from two fixed points.
+TEST(Stage, ALineAtTwoAnglesAndTwoDistances) {
+  std::mt19937_64 rng(38);
+  const Vector3d w = randomVector(rng).normalized(), q = 0.3 * randomVector(rng);
+  Problem p;
+  p.addMobileFeature("axis", Feature::makeLine(Vector3d(0.1, 0.2, 0.3), -Vector3d::UnitZ()));
+  p.addMobileFeature("axis2", Feature::makeLine(Vector3d(0.1, 0.2, 1.3), Vector3d::UnitZ()));
+  for (int i = 0; i < 2; ++i) {
+    const Vector3d a = randomVector(rng), u = randomVector(rng).normalized();
+    p.addFixedFeature("L" + std::to_string(i), Feature::makeLine(a, u));
+    // The mobile line's direction is -w for "axis" (its direction is -z): arccos(u·(-w)).
+    p.addConstraint("angle", "L" + std::to_string(i), i == 0 ? "axis" : "axis2",
+                    std::acos(u.dot(i == 0 ? -w : w)));
+    const Vector3d s = 2.0 * randomVector(rng);
+    p.addFixedFeature("S" + std::to_string(i), Feature::makePoint(s));
+    p.addConstraint("distance", "S" + std::to_string(i), "axis2", (s - q).cross(w).norm());
+  }
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_TRUE(r.complete) << r.roots_found << " of " << r.root_count;
+  bool found = false;
+  for (const Branch& b : s.branches) {
+    EXPECT_EQ(b.manifold->dof(), 2);
+    const Isometry3d Y = b.manifold->pose(referenceParams(*b.manifold));
+    const Vector3d dir = Y.linear() * Vector3d::UnitZ();
+    if ((dir - w).norm() < 1e-8 && (Y * Vector3d(0.1, 0.2, 0.3) - q).cross(w).norm() < 1e-8)
+      found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(Stage, NoPoseIsProvenInconsistent) {
+  std::mt19937_64 rng(35);
+  Problem p;
+  // Fixed points 10 apart, mobile ones 1 apart, legs 0.1 long: no pose.
+  for (int i = 0; i < 6; ++i) {
+    p.addFixedFeature("A" + std::to_string(i), Feature::makePoint(10.0 * randomVector(rng)));
+    p.addMobileFeature("B" + std::to_string(i), Feature::makePoint(randomVector(rng)));
+    p.addConstraint("distance", "A" + std::to_string(i), "B" + std::to_string(i), 0.1);
+  }
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(s.status, Status::kInconsistent);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(s.conflicts.size(), 6u);
+  EXPECT_TRUE(s.branches.empty());
+}
+
+TEST(Stage, AScaledAndMovedCopyGivesTheSamePosesMapped) {
+  std::mt19937_64 rng(36);
+  const Isometry3d X = randomPose(rng);
+  const Problem p = test::sixSix(rng, X);
+  const double scale = 250.0;
+  const Vector3d dW(100, -40, 7), dM(-3, 2, 9);
+  const Problem q = test::scaledAndMoved(p, scale, dW, dM);
+  Solution a, b;
+  StageReport ra, rb;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), a, &ra));
+  ASSERT_TRUE(solveComplete(q, builtinRegistry(), toleranceOf(q), b, &rb));
+  ASSERT_EQ(a.branches.size(), b.branches.size());
+  for (const Branch& br : a.branches) {
+    const Isometry3d Y = test::movedPose(br.manifold->pose({}), scale, dW, dM);
+    EXPECT_LT(nearestBranch(b, Y), 1e-7 * scale);
+  }
+}
+
+TEST(Stage, DeclinesWithAReason) {
+  std::mt19937_64 rng(37);
+  Problem p = test::sixSix(rng, randomPose(rng));
+  p.constraints.pop_back();
+  Solution s;
+  EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s));
+  EXPECT_NE(s.message.find("5 equations"), std::string::npos) << s.message;
+  EXPECT_EQ(s.status, Status::kNotSolved);
+}
+
+}  // namespace
+}  // namespace relpos::complete
