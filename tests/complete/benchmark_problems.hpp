@@ -1,6 +1,7 @@
 #pragma once
 // The benchmark problems of the complete solvers (data/complete, written by
 // scripts/make_complete_specs.py) and what the literature says of them, shared by the tests.
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct BenchmarkProblem {
 };
 
 const std::vector<BenchmarkProblem>& benchmarkProblems();
+
+// GoogleTest prints a parameter with this (its file name) instead of its bytes.
+inline void PrintTo(const BenchmarkProblem& b, std::ostream* os) { *os << b.file; }
 
 Problem loadComplete(const std::string& file);
 
