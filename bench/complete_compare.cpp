@@ -98,8 +98,8 @@ void relposAnswer(Row& row) {
     poses.push_back(X);
     const auto proof = relpos::test::proofOf(b);
     if (!proof || proof->exact || !(proof->radius > 0)) continue;
-    relpos::test::IntervalBox box{
-        proof->radius, proof->angle > 0 ? proof->angle : proof->radius / 3.0, row.line_quotient};
+    const relpos::test::IntervalBox box =
+        relpos::test::certificateBox(proof->radius, proof->angle, row.line_quotient);
     row.certified += relpos::test::provesSolutionWithin(row.problem, X, box).proven;
   }
   row.relpos_found = foundOf(row, poses);

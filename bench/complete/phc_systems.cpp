@@ -80,20 +80,26 @@ Poly leg(const Ring& r, const Vector3d& a, const Vector3d& b, C d2) {
   return chop(s - d2 * ee);
 }
 
-PolySystem pointSystem(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
-                       const std::vector<double>& d) {
-  const Ring r{8};
+// The Study quadric e·g = 0, leg 1, legs 2..6 minus leg 1, the chart: the same shape for a target
+// and the family's generic member.
+PolySystem studySystem(const Ring& r, const std::vector<Poly>& legs) {
   PolySystem s;
   s.variables = {"q0", "q1", "q2", "q3", "h0", "h1", "h2", "h3"};
   Poly study;
   for (int i = 0; i < 4; ++i) study = study + r.var(i) * r.var(4 + i);
   s.equations.push_back(study);
-  std::vector<Poly> legs;
-  for (std::size_t i = 0; i < a.size(); ++i) legs.push_back(leg(r, a[i], b[i], d[i] * d[i]));
   s.equations.push_back(legs[0]);
   for (std::size_t i = 1; i < legs.size(); ++i) s.equations.push_back(chop(legs[i] - legs[0]));
   s.equations.push_back(chart(r, 0, 4));
   return s;
+}
+
+PolySystem pointSystem(const std::vector<Vector3d>& a, const std::vector<Vector3d>& b,
+                       const std::vector<double>& d) {
+  const Ring r{8};
+  std::vector<Poly> legs;
+  for (std::size_t i = 0; i < a.size(); ++i) legs.push_back(leg(r, a[i], b[i], d[i] * d[i]));
+  return studySystem(r, legs);
 }
 
 std::array<Poly, 3> crossP(const std::array<Poly, 3>& u, const std::array<Poly, 3>& v) {
@@ -183,11 +189,6 @@ PolySystem genericMember(Family family, unsigned seed) {
   // (A_i antisymmetric, S_i symmetric) after the chart: the generic member takes random complex
   // A_i, S_i (the prototype's make_family.py), a 40-root family.
   const Ring r{8};
-  PolySystem s;
-  s.variables = {"q0", "q1", "q2", "q3", "h0", "h1", "h2", "h3"};
-  Poly study;
-  for (int i = 0; i < 4; ++i) study = study + r.var(i) * r.var(4 + i);
-  s.equations.push_back(study);
   std::vector<Poly> legs;
   for (int l = 0; l < 6; ++l) {
     Poly L;
@@ -203,10 +204,7 @@ PolySystem genericMember(Family family, unsigned seed) {
       }
     legs.push_back(L);
   }
-  s.equations.push_back(legs[0]);
-  for (int l = 1; l < 6; ++l) s.equations.push_back(chop(legs[l] - legs[0]));
-  s.equations.push_back(chart(r, 0, 4));
-  return s;
+  return studySystem(r, legs);
 }
 
 std::string phcText(const PolySystem& s) {

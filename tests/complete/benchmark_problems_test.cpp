@@ -117,10 +117,8 @@ TEST_P(BenchmarkProblems, CompleteAndEveryCertificateReproven) {
     EXPECT_FALSE(proof->exact) << bp.file << " branch " << i;
     EXPECT_GT(proof->radius, 0.0) << bp.file << " branch " << i;
     EXPECT_TRUE(std::isfinite(proof->radius) && std::isfinite(proof->angle));
-    // The tests' interval check, on the reported pose and radius: a root within them. An angle
-    // bound of 0 with a positive radius is read as the radius over the problem's size.
-    IntervalBox box{proof->radius, proof->angle > 0 ? proof->angle : proof->radius / 3.0,
-                    bp.line_quotient};
+    // The tests' interval check, on the reported pose and radius: a root within them.
+    const IntervalBox box = certificateBox(proof->radius, proof->angle, bp.line_quotient);
     const IntervalVerdict v = provesSolutionWithin(p, branchPose(s.branches[i]), box);
     EXPECT_TRUE(v.proven) << bp.file << " branch " << i << " (radius " << proof->radius
                           << ", angle " << proof->angle << "): " << v.why;

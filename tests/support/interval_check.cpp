@@ -286,6 +286,10 @@ IntervalVerdict provesSolutionInBox(const Problem& p, const Isometry3d& X_WM,
   return out;
 }
 
+IntervalBox certificateBox(double radius, double angle, bool line_quotient) {
+  return {radius, angle > 0 ? angle / std::sqrt(3.0) : radius / 3.0, line_quotient};
+}
+
 IntervalVerdict provesSolutionWithin(const Problem& p, const Isometry3d& X_WM, IntervalBox box) {
   const IntervalVerdict first = provesSolutionInBox(p, X_WM, box);
   if (first.proven) return first;

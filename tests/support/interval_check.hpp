@@ -24,6 +24,12 @@ struct IntervalVerdict {
   std::string why;  // what failed: an unsupported constraint, a singular Jacobian, K(X) outside
 };
 
+// The box a relpos certificate {radius, angle} (docs/spec.md §2) describes: each translation
+// coordinate within ±radius, the rotation within `angle` (each rotation-vector coordinate within
+// angle/√3, so that the whole vector is). An angle of 0 with a positive radius is read as
+// radius / 3, the radius over the benchmark problems' size.
+IntervalBox certificateBox(double radius, double angle, bool line_quotient);
+
 IntervalVerdict provesSolutionInBox(const Problem& p, const Isometry3d& X_WM,
                                     const IntervalBox& box);
 
