@@ -8,6 +8,7 @@
 // Without `phc` on PATH (Debian: apt-get install phcpack) the PHC columns say so.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -117,10 +118,13 @@ void phcColumns(Row& row, const std::string& phc, const std::string& cache, int 
   std::string error;
   const std::string start =
       relpos::bench::startSystem(phc, cache, family, &start_roots, &start_s, &error);
+  // phc -p tracks one path per root of the start system: a start that lost a root loses poses.
+  const char* fam = family == Family::kPointDistances ? "point-distance" : "line-distance";
   if (start_s > 0)
-    std::printf("  (made the %s start system: %d roots, %.2f s by phc -b, cached in %s)\n",
-                family == Family::kPointDistances ? "point-distance" : "line-distance", start_roots,
-                start_s, cache.c_str());
+    std::printf("  %s: made the %s start system: %d roots, %.2f s by phc -b, cached in %s\n",
+                row.name.c_str(), fam, start_roots, start_s, cache.c_str());
+  else if (!start.empty())
+    std::printf("  %s: the cached %s start system, %d roots\n", row.name.c_str(), fam, start_roots);
   auto posesOf = [&](const relpos::bench::PhcRun& run) {
     std::vector<relpos::Isometry3d> poses;
     for (const std::vector<double>& x : run.real_roots) {
@@ -230,16 +234,22 @@ int main(int argc, char** argv) {
     for (Row& row : rows()) phcColumns(row, phc, cache, phc_runs);
   }
 
-  std::printf("\n%-28s %10s %-10s %10s %10s %8s %8s %8s %10s %9s %8s\n", "problem", "relpos ms",
-              "status", "phc -b s", "phc -p s", "known", "relpos", "phc -b", "phc -p", "certified",
-              "complete");
+  std::printf("\n%-28s %10s %-10s %10s %10s %9s %6s %7s %7s %7s %9s %8s\n", "problem", "relpos ms",
+              "status", "phc -b s", "phc -p s", "p/relpos", "known", "relpos", "phc -b", "phc -p",
+              "certified", "complete");
   for (const Row& row : rows()) {
     char ms[32] = "-";  // not measured (filtered out)
     if (row.relpos_ms >= 0) std::snprintf(ms, sizeof ms, "%.3f", row.relpos_ms);
     const std::size_t known = row.reference.poses.size();
-    std::printf("%-28s %10s %-10s %10s %10s %8zu %8s %8s %10s %9s %8s\n", row.name.c_str(), ms,
+    // How many times faster than phc -p (its fastest run): only for an answer relpos gave.
+    char ratio[32] = "-";
+    if (row.relpos_status == "solved" && row.relpos_ms > 0 && !row.phc_p_s.empty())
+      std::snprintf(
+          ratio, sizeof ratio, "%.0fx",
+          *std::min_element(row.phc_p_s.begin(), row.phc_p_s.end()) * 1e3 / row.relpos_ms);
+    std::printf("%-28s %10s %-10s %10s %10s %9s %6zu %7s %7s %7s %9s %8s\n", row.name.c_str(), ms,
                 row.relpos_status.c_str(), span(row.phc_b_s, "%.2f").c_str(),
-                span(row.phc_p_s, "%.2f").c_str(), known,
+                span(row.phc_p_s, "%.2f").c_str(), ratio, known,
                 (std::to_string(row.relpos_found) + "/" + std::to_string(known)).c_str(),
                 spanFound(row.phc_b_found, known).c_str(),
                 spanFound(row.phc_p_found, known).c_str(),
