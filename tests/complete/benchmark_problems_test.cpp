@@ -11,6 +11,7 @@
 #include "completeness_fields.hpp"
 #include "evaluator.hpp"
 #include "interval_check.hpp"
+#include "reference_comparison.hpp"
 #include "relpos/core/manifold.hpp"
 #include "relpos/core/solver.hpp"
 #include "solve_helpers.hpp"
@@ -20,85 +21,15 @@ namespace {
 
 class BenchmarkProblems : public ::testing::TestWithParam<BenchmarkProblem> {};
 
-// The pose a 0-DOF branch stands for (a positive-DOF one's at its reference parameters).
-Isometry3d branchPose(const Branch& b) { return b.manifold->pose(referenceParams(*b.manifold)); }
-
-// The four-spheres problem: each solution is a world line, its poses a 2-DOF set (the spin about
-// it and the slide along it). The line is directed in the spec, the distances are not: each
-// tangent line carries both directions of the mobile line, which no connected 2-DOF branch holds
-// together, so a line is one branch per direction the branches cover — 12 lines, as 12 branches
-// of one direction each plus their reverses or as 24; either way every pose must be on one.
-void checkLineBranches(const Problem& p, const Solution& s, const ReferenceRoots& ref) {
-  const Vector3d m = [&] {
-    for (const InputConstraint& c : p.constraints)
-      if (c.mobile.kind == FeatureKind::kLine) return c.mobile.direction;
-    return Vector3d(Vector3d::UnitZ());
-  }();
-  // A half turn about an axis across the mobile line, through its point: the line reversed.
-  const Feature* line = nullptr;
-  for (const InputConstraint& c : p.constraints)
-    if (c.mobile.kind == FeatureKind::kLine) line = &c.mobile;
-  ASSERT_NE(line, nullptr);
-  Isometry3d flip = Isometry3d::Identity();
-  flip.linear() = Eigen::AngleAxisd(3.14159265358979323846, m.unitOrthogonal()).toRotationMatrix();
-  flip.translation() = line->point - flip.linear() * line->point;
-  for (std::size_t i = 0; i < ref.poses.size(); ++i) {
-    EXPECT_TRUE(someBranchContains(s, ref.poses[i], 1e-6))
-        << "reference line " << i << " at " << poseText(ref.poses[i]) << " is on no branch";
-    EXPECT_TRUE(someBranchContains(s, ref.poses[i] * flip, 1e-6))
-        << "reference line " << i << ", reversed, is on no branch";
-  }
-  std::vector<WorldLine> directed, undirected;
-  for (std::size_t i = 0; i < s.branches.size(); ++i) {
-    EXPECT_EQ(s.branches[i].manifold->dof(), 2) << "branch " << i;
-    const Isometry3d X = branchPose(s.branches[i]);
-    const Feature f = line->placed(X);
-    const WorldLine d{f.point - f.point.dot(f.direction) * f.direction, f.direction};
-    for (std::size_t j = 0; j < directed.size(); ++j)
-      EXPECT_GT(lineDistance(d, directed[j]), 1e-6)
-          << "branches " << j << " and " << i << " are the same directed line";
-    directed.push_back(d);
-    const WorldLine u = undirectedLine(p, X);
-    bool seen = false;
-    for (const WorldLine& w : undirected) seen = seen || lineDistance(u, w) < 1e-6;
-    if (!seen) undirected.push_back(u);
-  }
-  EXPECT_EQ(undirected.size(), ref.poses.size()) << describeBranches(s);
-}
-
 TEST_P(BenchmarkProblems, EveryPoseFoundVerifiedAndDistinct) {
   const BenchmarkProblem& bp = GetParam();
   const Problem p = loadComplete(bp.file);
   const ReferenceRoots& ref = benchmarkReference(bp);
   ASSERT_FALSE(ref.poses.empty()) << bp.file << ": the reference found no root";
-
   const Solution s = solve(p, builtinRegistry());
   ASSERT_STREQ(toString(s.status), "solved") << bp.file << ": " << describeBranches(s);
-  if (!bp.line_quotient) {
-    EXPECT_EQ(s.branches.size(), ref.poses.size()) << describeBranches(s);
-  }
-
-  // Every branch holds every constraint wherever it is sampled.
-  std::string where;
-  EXPECT_LT(worstSampledViolation(p, s, 8, 7, &where), 1e-7) << where;
-
-  if (bp.line_quotient) {
-    checkLineBranches(p, s, ref);
-    return;
-  }
-  // Every reference root lies on a branch.
-  for (std::size_t i = 0; i < ref.poses.size(); ++i)
-    EXPECT_TRUE(someBranchContains(s, ref.poses[i], 1e-6))
-        << bp.file << ": reference root " << i << " at " << poseText(ref.poses[i])
-        << " is on no branch";
-
-  // No two branches the same pose.
-  for (std::size_t i = 0; i < s.branches.size(); ++i) {
-    EXPECT_EQ(s.branches[i].manifold->dof(), 0) << bp.file << " branch " << i;
-    for (std::size_t j = 0; j < i; ++j)
-      EXPECT_GT(poseDistance(branchPose(s.branches[i]), branchPose(s.branches[j])), 1e-6)
-          << bp.file << ": branches " << j << " and " << i << " are the same pose";
-  }
+  for (const std::string& f : compareWithReference(p, s, ref, bp.line_quotient))
+    ADD_FAILURE() << bp.file << ": " << f;
 }
 
 TEST_P(BenchmarkProblems, CompleteAndEveryCertificateReproven) {
