@@ -10,7 +10,9 @@
 
 #include "completeness_fields.hpp"
 #include "evaluator.hpp"
+#include "interval_check.hpp"
 #include "random_problems.hpp"
+#include "reference_comparison.hpp"
 #include "reference_roots.hpp"
 #include "relpos/core/manifold.hpp"
 #include "relpos/core/solver.hpp"
@@ -120,8 +122,6 @@ ZeroDofProblem makeProblem(int index) {
   }
 }
 
-Isometry3d branchPose(const Branch& b) { return b.manifold->pose(referenceParams(*b.manifold)); }
-
 class RandomZeroDof : public ::testing::TestWithParam<int> {};
 
 TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
@@ -156,6 +156,14 @@ TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
         if (s.branches[b].manifold->dof() == 0 &&
             poseDistance(branchPose(s.branches[a]), branchPose(s.branches[b])) <= 1e-6)
           fail(z, "branches " + std::to_string(b) + " and " + std::to_string(a) + " are one pose");
+      // A certified branch's box, re-proven by the tests' own interval check.
+      const std::optional<BranchProof> proof = proofOf(s.branches[a]);
+      if (!proof || proof->exact) continue;
+      const IntervalVerdict v = provesSolutionWithin(
+          p, branchPose(s.branches[a]), certificateBox(proof->radius, proof->angle, false));
+      if (!(proof->radius > 0) || !v.proven)
+        fail(z, "branch " + std::to_string(a) + "'s certificate (radius " +
+                    std::to_string(proof->radius) + ") is not re-proven: " + v.why);
     }
     // Complete is claimed by the field once it exists; before, a `solved` answer of the rules
     // claims it (docs/spec.md: relpos promises every pose).
