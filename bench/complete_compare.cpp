@@ -66,8 +66,10 @@ class MedianReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
+    // With one repetition there is no aggregate: the run itself stands for the median.
     for (const Run& r : runs)
-      if (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median")
+      if (r.run_type == Run::RT_Aggregate ? r.aggregate_name == "median"
+                                          : !medians.count(r.run_name.function_name))
         medians[r.run_name.function_name] = r.GetAdjustedRealTime();
   }
   std::map<std::string, double> medians;  // in the benchmark's unit (ms)
