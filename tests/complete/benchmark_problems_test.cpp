@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cmath>
+
 #include "completeness_fields.hpp"
-#include "evaluator.hpp"
 #include "interval_check.hpp"
 #include "reference_comparison.hpp"
 #include "relpos/core/manifold.hpp"

@@ -121,5 +121,21 @@ TEST(ReferenceCheck, IntervalCheckProvesTrueRootsAndRefusesDisplacedPoses) {
   }
 }
 
+TEST(ReferenceCheck, IntervalCheckFollowsTheFixedPose) {
+  // The fixed object moved and turned: every root moves with it, and is proven there.
+  Problem p = loadComplete("stewart-gough-dietmaier-40.json");
+  const ReferenceRoots& ref = benchmarkReference(problemNamed("stewart-gough-dietmaier-40.json"));
+  Isometry3d T = Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  T.translation() = Vector3d(3, -1, 2);
+  p.fixed.pose = T;
+  for (std::size_t i = 0; i < ref.poses.size(); ++i) {
+    EXPECT_LT(worstViolation(p, T * ref.poses[i]), 1e-9);
+    const IntervalVerdict v = provesSolutionInBox(p, T * ref.poses[i], {1e-7, 1e-7, false});
+    EXPECT_TRUE(v.proven) << "root " << i << ": " << v.why;
+    EXPECT_FALSE(provesSolutionWithin(p, ref.poses[i], {1e-6, 1e-6, false}).proven) << i;
+  }
+}
+
 }  // namespace
 }  // namespace relpos::test

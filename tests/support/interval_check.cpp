@@ -130,8 +130,17 @@ bool equation(const InputConstraint& c, const Isometry3d& X_WF, const Chart& ch,
     *why = "a range constraint";
     return false;
   }
-  auto fixedPoint = [&](const Feature& f) { return constantV(exact(X_WF * f.point)); };
-  auto fixedDir = [&](const Feature& f) { return constantV(exact(X_WF.linear() * f.direction)); };
+  // The fixed pose's entries are the problem's data; the products are enclosed, not rounded.
+  auto placeFixed = [&](const Vector3d& v, bool is_direction) {
+    std::array<I, 3> w;
+    for (int i = 0; i < 3; ++i) {
+      w[i] = is_direction ? I(0.0) : I(X_WF.translation()[i]);
+      for (int j = 0; j < 3; ++j) w[i] += I(X_WF.linear()(i, j)) * v[j];
+    }
+    return constantV(w);
+  };
+  auto fixedPoint = [&](const Feature& f) { return placeFixed(f.point, false); };
+  auto fixedDir = [&](const Feature& f) { return placeFixed(f.direction, true); };
   auto mobilePoint = [&](const Feature& f) { return placePoint(ch, x, A, B, f.point, false); };
   auto mobileDir = [&](const Feature& f) { return placePoint(ch, x, A, B, f.direction, true); };
   const bool fixed_point = c.fixed.kind == K::kPoint, mobile_point = c.mobile.kind == K::kPoint;
