@@ -194,7 +194,9 @@ int main(int argc, char** argv) {
     Row row;
     row.name = f;
     row.problem = *r.problem;
-    row.line_quotient = row.problem.constraints.size() == 4;
+    Family family;  // the mobile object one line: its spin and slide are free
+    row.line_quotient =
+        relpos::bench::familyOf(row.problem, &family) && family == Family::kLineDistances;
     relpos::test::ReferenceOptions o;
     o.starts = 6000;
     o.seed = 20261202;
