@@ -213,3 +213,38 @@ TEST(SolveFiber, SameOutputOnEveryRunAndThread) {
 
 }  // namespace
 }  // namespace relpos::complete
+
+namespace relpos::complete {
+namespace {
+
+// A random real dense system through a known real point: complete, the point in one box.
+TEST(SolveFiber, DenseSystemsThroughAKnownPointAreComplete) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const auto& [n, d] : {std::make_pair(3, 2), std::make_pair(2, 3), std::make_pair(4, 2)}) {
+    const testing::DenseFamily f(n, d);
+    std::vector<Complex> x(n);
+    Eigen::VectorXcd known(n);
+    for (int i = 0; i < n; ++i) known[i] = x[i] = u(rng) * 0.5 + 0.25 * i;  // not dyadic
+    const int per = f.parameterCount() / n;
+    std::vector<double> p(f.parameterCount());
+    for (int k = 0; k < n; ++k) {
+      double s = 0.0;
+      for (int j = 0; j + 1 < per; ++j) {
+        p[k * per + j] = u(rng);
+        s += p[k * per + j] * f.monomialValue(k * per + j, x.data()).real();
+      }
+      p[k * per + per - 1] = -s;
+    }
+    const FiberResult res = solveFiber(f, p);
+    EXPECT_TRUE(res.complete) << n << " " << d;
+    expectDisjoint(res);
+    int near = 0;
+    for (const auto& r : res.roots)
+      if (r.real && (r.x - known).cwiseAbs().maxCoeff() < 1e-10) ++near;
+    EXPECT_EQ(near, 1) << n << " " << d;
+  }
+}
+
+}  // namespace
+}  // namespace relpos::complete

@@ -56,3 +56,29 @@ TEST(StartSystem, StewartGoughHasFortyRoots) {
 
 }  // namespace
 }  // namespace relpos::complete
+
+namespace relpos::complete {
+namespace {
+
+class DenseStartSystem : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+// A generic dense system of n equations of degree d has d^n roots (Bézout).
+TEST_P(DenseStartSystem, FindsTheBezoutNumberOfRoots) {
+  const auto [n, d] = GetParam();
+  const testing::DenseFamily f(n, d);
+  const StartSystem& s = startSystem(f);
+  int expected = 1;
+  for (int i = 0; i < n; ++i) expected *= d;
+  EXPECT_EQ(static_cast<int>(s.roots.size()), expected);
+  EXPECT_EQ(s.total_degree_paths, expected);
+  EXPECT_EQ(s.total_degree_added, 0);  // monodromy had found them all
+  expectDistinctRoots(f, s);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, DenseStartSystem,
+                         ::testing::Values(std::make_pair(1, 4), std::make_pair(2, 3),
+                                           std::make_pair(3, 2), std::make_pair(2, 4),
+                                           std::make_pair(4, 2)));
+
+}  // namespace
+}  // namespace relpos::complete
