@@ -192,6 +192,7 @@ PathEnd Tracker::track(const CVec& start) {
         return end;
       }
     } else {
+      ++end.rejected;
       h = 0.5 * hh;
       if (h < options_.min_step) {
         end.x = x;
