@@ -75,6 +75,7 @@ CompiledShape::CompiledShape(const SystemShape& shape) : variables_(shape.variab
       p.node = builder.node(reduced);
       p.var = key[i];
       p.power = static_cast<std::uint8_t>(j - i);
+      p.weight = double(p.power);
       partials_.push_back(p);
       i = j;
     }
@@ -160,7 +161,7 @@ void evaluate(const CompiledShape& shape, const Complex* c, const Complex* dc, c
       const auto& p = partials[i];
       const double* m = v + 2 * p.node;
       const double* k = cv + 2 * p.term;
-      const double w = p.power;
+      const double w = p.weight;
       re += w * (k[0] * m[0] - k[1] * m[1]);
       im += w * (k[0] * m[1] + k[1] * m[0]);
     }

@@ -38,6 +38,7 @@ class CompiledShape {
     std::uint16_t node = 0;
     std::uint8_t var = 0;
     std::uint8_t power = 0;
+    double weight = 0.0;  // = power (a conversion less in the inner loop)
   };
 
   int variables() const { return variables_; }
