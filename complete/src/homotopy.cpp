@@ -146,6 +146,14 @@ double Tracker::newton(CVec& x, double s, CVec* v) {
   return normInf(d_);
 }
 
+double Tracker::chord(CVec& x) {
+  evaluate(shape_, c_.data(), nullptr, x, scratch_, f_, nullptr, nullptr);
+  lu_.solve(f_, d_);
+  if (!finite(d_)) return -1.0;
+  x -= d_;
+  return normInf(d_);
+}
+
 PathEnd Tracker::track(const CVec& start) {
   PathEnd end;
   const int n = shape_.variables();
@@ -175,7 +183,7 @@ PathEnd Tracker::track(const CVec& start) {
       // A large first correction must be followed by a much smaller one (Newton contracting
       // quadratically from inside the path's basin, not sitting between two paths).
       if (ok && e1 > options_.confirm_error) {
-        const double e2 = newton(y, s1, &k1_next) / scale;
+        const double e2 = chord(y) / scale;
         ok = e2 >= 0.0 && e2 <= 0.1 * e1;
       }
     }

@@ -77,6 +77,8 @@ class Tracker {
   // Jacobian is singular or the result not finite. v (if not null): the velocity at x before
   // the step, from the same Jacobian.
   double newton(CVec& x, double s, CVec* v);
+  // A simplified Newton step at x with the last factored Jacobian (same s): f only.
+  double chord(CVec& x);
 
   const CompiledShape& shape_;
   const CoefficientPolynomials& poly_;
