@@ -248,3 +248,33 @@ TEST(SolveFiber, DenseSystemsThroughAKnownPointAreComplete) {
 
 }  // namespace
 }  // namespace relpos::complete
+
+namespace relpos::complete {
+namespace {
+
+// The platform equal to its base (b_i = a_i) with equal legs: at R = I every translation of
+// length d is a pose, a surface of solutions. Its points are singular roots: never certified,
+// never "complete", and every certified box holds a root (checked by its residual).
+TEST(SolveFiber, APositiveDimensionalFiberIsNeverComplete) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::array<std::array<double, 3>, 6> a{};
+  for (auto& v : a)
+    for (auto& w : v) w = u(rng);
+  testing::StewartPose pose;
+  pose.e = {1.0, 0.0, 0.0, 0.0};
+  pose.g = {0.0, 0.3, -0.2, 0.4};  // t = 2g
+  const auto target = testing::stewartMemberAround(pose, a, a, {1.0, 0.3, -0.6, 0.2});
+  const FiberResult res = solveFiber(kStewart, target);
+  EXPECT_FALSE(res.complete);
+  EXPECT_LT(res.roots.size(), 40u);
+  expectDisjoint(res);
+  // No certified box holds a pose of the surface (R = I, |t| = d).
+  for (const auto& r : res.roots) {
+    const bool identity = std::abs(r.x[1]) + std::abs(r.x[2]) + std::abs(r.x[3]) < 1e-6;
+    EXPECT_FALSE(identity);
+  }
+}
+
+}  // namespace
+}  // namespace relpos::complete
