@@ -125,7 +125,7 @@ void Tracker::coefficientsAt(double s) {
 
 bool Tracker::velocity(const CVec& x, double s, CVec& v) {
   coefficientsAt(s);
-  evaluate(shape_, c_.data(), dc_.data(), x, scratch_, f_, &J_, &fs_);
+  evaluate(shape_, c_.data(), dc_.data(), x, scratch_, nullptr, &J_, &fs_);  // f unused
   if (!lu_.factor(J_)) return false;
   lu_.solve(fs_, v);
   v = -v;
@@ -134,7 +134,7 @@ bool Tracker::velocity(const CVec& x, double s, CVec& v) {
 
 double Tracker::newton(CVec& x, double s, CVec* v) {
   coefficientsAt(s);
-  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, f_, &J_, v ? &fs_ : nullptr);
+  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, &f_, &J_, v ? &fs_ : nullptr);
   if (!lu_.factor(J_)) return -1.0;
   lu_.solve(f_, d_);
   if (!finite(d_)) return -1.0;
@@ -147,7 +147,7 @@ double Tracker::newton(CVec& x, double s, CVec* v) {
 }
 
 double Tracker::chord(CVec& x) {
-  evaluate(shape_, c_.data(), nullptr, x, scratch_, f_, nullptr, nullptr);
+  evaluate(shape_, c_.data(), nullptr, x, scratch_, &f_, nullptr, nullptr);
   lu_.solve(f_, d_);
   if (!finite(d_)) return -1.0;
   x -= d_;
@@ -223,7 +223,7 @@ double polish(const CompiledShape& shape, const Complex* c, CVec& x, EvalScratch
   CMat J(n, n);
   double last = -1.0;
   for (int it = 0; it < iterations; ++it) {
-    evaluate(shape, c, nullptr, x, scratch, f, &J, nullptr);
+    evaluate(shape, c, nullptr, x, scratch, &f, &J, nullptr);
     SmallLU lu;
     CVec d(n);
     if (!lu.factor(J)) return -1.0;

@@ -20,7 +20,7 @@ void expectDistinctRoots(const Family& f, const StartSystem& s) {
   detail::EvalScratch scratch(shape);
   for (std::size_t i = 0; i < s.roots.size(); ++i) {
     detail::CVec fx(shape.variables());
-    detail::evaluate(shape, c.data(), nullptr, detail::CVec(s.roots[i]), scratch, fx, nullptr,
+    detail::evaluate(shape, c.data(), nullptr, detail::CVec(s.roots[i]), scratch, &fx, nullptr,
                      nullptr);
     EXPECT_LT(fx.norm(), 1e-9 * (1.0 + s.roots[i].squaredNorm())) << "root " << i;
     for (std::size_t j = 0; j < i; ++j)
