@@ -211,12 +211,6 @@ TEST(SolveFiber, SameOutputOnEveryRunAndThread) {
   expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles));
 }
 
-}  // namespace
-}  // namespace relpos::complete
-
-namespace relpos::complete {
-namespace {
-
 // A random real dense system through a known real point: complete, the point in one box.
 TEST(SolveFiber, DenseSystemsThroughAKnownPointAreComplete) {
   std::mt19937_64 rng(3);
@@ -246,15 +240,9 @@ TEST(SolveFiber, DenseSystemsThroughAKnownPointAreComplete) {
   }
 }
 
-}  // namespace
-}  // namespace relpos::complete
-
-namespace relpos::complete {
-namespace {
-
 // The platform equal to its base (b_i = a_i) with equal legs: at R = I every translation of
 // length d is a pose, a surface of solutions. Its points are singular roots: never certified,
-// never "complete", and every certified box holds a root (checked by its residual).
+// never "complete".
 TEST(SolveFiber, APositiveDimensionalFiberIsNeverComplete) {
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

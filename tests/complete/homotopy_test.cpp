@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <utility>
 
 #include "test_families.hpp"
 
@@ -43,21 +44,28 @@ TEST(Homotopy, TheArcRunsFromZeroToOne) {
   EXPECT_NE(detail::randomGamma(5), detail::randomGamma(6));
 }
 
+// One equation in one unknown: a x^degree + b, a and b linear in τ (a0, a1, b0, b1).
+struct OneVariable {
+  SystemShape shape;
+  detail::CoefficientPolynomials poly;
+  OneVariable(int degree, std::vector<Complex> a) {
+    shape.variables = 1;
+    Monomial m;
+    m.degree = static_cast<std::uint8_t>(degree);
+    shape.monomials = {m, Monomial{}};
+    shape.terms = {{0, 0}, {0, 1}};
+    poly.terms = 2;
+    poly.degree = 1;
+    poly.a = std::move(a);
+  }
+};
+
 // x² = 1 + 3τ along the arc: from x = ±1 to ±2, each path to its own root.
 TEST(Homotopy, TracksSquareRootsToTheirEnds) {
-  SystemShape s;
-  s.variables = 1;
-  Monomial x2;
-  x2.degree = 2;
-  s.monomials = {x2, Monomial{}};
-  s.terms = {{0, 0}, {0, 1}};
-  const detail::CompiledShape shape(s);
-  detail::CoefficientPolynomials poly;
-  poly.terms = 2;
-  poly.degree = 1;
-  poly.a = {1.0, 0.0, -1.0, -3.0};  // 1 · x² + (−1 − 3τ)
+  const OneVariable sys(2, {1.0, 0.0, -1.0, -3.0});  // 1 · x² + (−1 − 3τ)
+  const detail::CompiledShape shape(sys.shape);
   const Complex end[2] = {1.0, -4.0};
-  detail::Tracker tracker(shape, poly, detail::Arc{detail::randomGamma(3)}, end);
+  detail::Tracker tracker(shape, sys.poly, detail::Arc{detail::randomGamma(3)}, end);
   for (const double x0 : {1.0, -1.0}) {
     detail::CVec start(1);
     start << x0;
@@ -67,20 +75,11 @@ TEST(Homotopy, TracksSquareRootsToTheirEnds) {
   }
 }
 
-// x · (1 − τ) = 1: the root leaves to infinity as τ → 1.
+// x (1 − τ) = 1: the root leaves to infinity as τ → 1.
 TEST(Homotopy, ClassifiesADivergingPathAsAtInfinity) {
-  SystemShape s;
-  s.variables = 1;
-  Monomial x;
-  x.degree = 1;
-  s.monomials = {x, Monomial{}};
-  s.terms = {{0, 0}, {0, 1}};
-  const detail::CompiledShape shape(s);
-  detail::CoefficientPolynomials poly;
-  poly.terms = 2;
-  poly.degree = 1;
-  poly.a = {1.0, -1.0, -1.0, 0.0};
-  detail::Tracker tracker(shape, poly, detail::Arc{detail::randomGamma(3)}, nullptr);
+  const OneVariable sys(1, {1.0, -1.0, -1.0, 0.0});  // (1 − τ) x − 1
+  const detail::CompiledShape shape(sys.shape);
+  detail::Tracker tracker(shape, sys.poly, detail::Arc{detail::randomGamma(3)}, nullptr);
   detail::CVec start(1);
   start << 1.0;
   EXPECT_EQ(tracker.track(start).status, detail::PathStatus::kAtInfinity);

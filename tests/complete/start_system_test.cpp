@@ -54,12 +54,6 @@ TEST(StartSystem, StewartGoughHasFortyRoots) {
   expectDistinctRoots(f, s);
 }
 
-}  // namespace
-}  // namespace relpos::complete
-
-namespace relpos::complete {
-namespace {
-
 class DenseStartSystem : public ::testing::TestWithParam<std::pair<int, int>> {};
 
 // A generic dense system of n equations of degree d has d^n roots (Bézout).
