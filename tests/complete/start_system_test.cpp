@@ -1,5 +1,7 @@
 // Start systems by monodromy, checked against the families' known generic root counts (Bézout
 // for two conics; 40 for the general Stewart–Gough platform: Raghavan 1993, Wampler 1996).
+#include "start_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -73,6 +75,18 @@ INSTANTIATE_TEST_SUITE_P(Sizes, DenseStartSystem,
                          ::testing::Values(std::make_pair(1, 4), std::make_pair(2, 3),
                                            std::make_pair(3, 2), std::make_pair(2, 4),
                                            std::make_pair(4, 2)));
+
+// Above the Bézout limit the count is cross-checked by a second, independent monodromy run.
+TEST(StartSystem, ASecondMonodromyRunAgreesWhenBezoutIsTooLarge) {
+  const testing::DenseFamily f(3, 2);
+  const auto s = detail::computeStartSystem(f, 4);  // Bézout 8 > 4
+  EXPECT_EQ(s->check, "monodromy+second-monodromy");
+  EXPECT_EQ(s->total_degree_paths, 0);
+  EXPECT_EQ(s->roots.size(), 8u);
+  EXPECT_EQ(s->second_monodromy_roots, 8);
+  EXPECT_EQ(s->second_monodromy_added, 0);
+  expectDistinctRoots(f, *s);
+}
 
 }  // namespace
 }  // namespace relpos::complete
