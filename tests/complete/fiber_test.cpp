@@ -207,7 +207,11 @@ TEST(SolveFiber, SameOutputOnEveryRunAndThread) {
   tb.join();
   expectSame(first, a);
   expectSame(first, b);
+  FiberOptions parallel;
+  parallel.threads = 3;
+  expectSame(first, solveFiber(kStewart, target, parallel));
   const std::vector<double> circles{1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, -3};
+  expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles, parallel));
   expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles));
 }
 

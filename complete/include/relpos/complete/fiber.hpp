@@ -43,6 +43,9 @@ struct CertifiedRoot {
 struct FiberOptions {
   std::uint64_t seed = 1;  // of the random γ of each tracking attempt
   int attempts = 3;        // tracking attempts (a new γ each) before giving up on a missing root
+  // Threads tracking the paths of one call (added for issue 15's engine): 1 runs in the caller's
+  // thread; the answer is the same for every value.
+  int threads = 1;
 };
 
 struct FiberResult {
