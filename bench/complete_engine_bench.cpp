@@ -28,14 +28,16 @@ void BM_SolveFiberStewart(benchmark::State& state) {
   startSystem(family());
   int complete = 0, runs = 0;
   for (auto _ : state) {
-    const FiberResult r = solveFiber(family(), t);
+    FiberOptions options;
+    options.threads = static_cast<int>(state.range(0));
+    const FiberResult r = solveFiber(family(), t, options);
     complete += r.complete ? 1 : 0;
     ++runs;
     benchmark::DoNotOptimize(r.roots.data());
   }
   state.counters["complete"] = double(complete) / runs;
 }
-BENCHMARK(BM_SolveFiberStewart)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SolveFiberStewart)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Tracking only (one γ, 40 paths) and certification only (40 endpoints).
 void BM_TrackStewart(benchmark::State& state) {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "homotopy.hpp"
 #include "krawczyk.hpp"
@@ -48,15 +49,35 @@ FiberResult solveFiber(const Family& f, const std::vector<double>& target,
   const detail::CoefficientPolynomials poly =
       detail::interpolateSegment(f, start.params.data(), p1.data());
 
-  std::vector<detail::BoxCertificate> kept;
+  // Path i's certificate lands in slot i whichever thread tracked it, and the slots are merged
+  // in path order: the same answer for every thread count.
+  const int paths = result.root_count;
+  const int threads = std::clamp(options.threads, 1, std::max(1, paths));
+  std::vector<detail::BoxCertificate> slots(paths), kept;
   for (int attempt = 0; attempt < std::max(1, options.attempts); ++attempt) {
     result.attempts = attempt + 1;
     const Complex gamma = detail::randomGamma(detail::mixSeed(options.seed, attempt));
-    detail::Tracker tracker(shape, poly, detail::Arc{gamma}, c1.data());
-    for (const Eigen::VectorXcd& s : start.roots) {
-      const detail::PathEnd e = tracker.track(detail::CVec(s));
-      if (e.status != detail::PathStatus::kFinite) continue;
-      detail::BoxCertificate c = certifier.certify(e.x);
+    auto work = [&](int first, detail::Certifier& cert) {
+      detail::Tracker tracker(shape, poly, detail::Arc{gamma}, c1.data());
+      for (int i = first; i < paths; i += threads) {
+        slots[i] = detail::BoxCertificate();
+        const detail::PathEnd e = tracker.track(detail::CVec(start.roots[i]));
+        if (e.status == detail::PathStatus::kFinite) slots[i] = cert.certify(e.x);
+      }
+    };
+    if (threads == 1) {
+      work(0, certifier);
+    } else {
+      std::vector<std::thread> pool;
+      for (int t = 1; t < threads; ++t)
+        pool.emplace_back([&, t] {
+          detail::Certifier own(shape, ic.data());
+          work(t, own);
+        });
+      work(0, certifier);
+      for (auto& th : pool) th.join();
+    }
+    for (auto& c : slots) {
       if (!c.ok) continue;
       bool known = false;
       for (const auto& k : kept)

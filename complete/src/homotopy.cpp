@@ -125,7 +125,7 @@ void Tracker::coefficientsAt(double s) {
 
 bool Tracker::velocity(const CVec& x, double s, CVec& v) {
   coefficientsAt(s);
-  evaluate(shape_, c_.data(), dc_.data(), x, scratch_, f_, &J_, &fs_);
+  evaluate(shape_, c_.data(), dc_.data(), x, scratch_, nullptr, &J_, &fs_);  // f unused
   if (!lu_.factor(J_)) return false;
   lu_.solve(fs_, v);
   v = -v;
@@ -134,7 +134,7 @@ bool Tracker::velocity(const CVec& x, double s, CVec& v) {
 
 double Tracker::newton(CVec& x, double s, CVec* v) {
   coefficientsAt(s);
-  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, f_, &J_, v ? &fs_ : nullptr);
+  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, &f_, &J_, v ? &fs_ : nullptr);
   if (!lu_.factor(J_)) return -1.0;
   lu_.solve(f_, d_);
   if (!finite(d_)) return -1.0;
@@ -142,6 +142,14 @@ double Tracker::newton(CVec& x, double s, CVec* v) {
     lu_.solve(fs_, *v);
     *v = -*v;
   }
+  x -= d_;
+  return normInf(d_);
+}
+
+double Tracker::chord(CVec& x) {
+  evaluate(shape_, c_.data(), nullptr, x, scratch_, &f_, nullptr, nullptr);
+  lu_.solve(f_, d_);
+  if (!finite(d_)) return -1.0;
   x -= d_;
   return normInf(d_);
 }
@@ -175,7 +183,7 @@ PathEnd Tracker::track(const CVec& start) {
       // A large first correction must be followed by a much smaller one (Newton contracting
       // quadratically from inside the path's basin, not sitting between two paths).
       if (ok && e1 > options_.confirm_error) {
-        const double e2 = newton(y, s1, &k1_next) / scale;
+        const double e2 = chord(y) / scale;
         ok = e2 >= 0.0 && e2 <= 0.1 * e1;
       }
     }
@@ -192,6 +200,7 @@ PathEnd Tracker::track(const CVec& start) {
         return end;
       }
     } else {
+      ++end.rejected;
       h = 0.5 * hh;
       if (h < options_.min_step) {
         end.x = x;
@@ -214,7 +223,7 @@ double polish(const CompiledShape& shape, const Complex* c, CVec& x, EvalScratch
   CMat J(n, n);
   double last = -1.0;
   for (int it = 0; it < iterations; ++it) {
-    evaluate(shape, c, nullptr, x, scratch, f, &J, nullptr);
+    evaluate(shape, c, nullptr, x, scratch, &f, &J, nullptr);
     SmallLU lu;
     CVec d(n);
     if (!lu.factor(J)) return -1.0;

@@ -89,9 +89,8 @@ struct Certifier::Impl {
     const int n = shape.variables();
     if (!(r > 0.0) || !std::isfinite(r)) return false;
     // Preconditioner in round-to-nearest, before the upward scope.
-    CVec f(n);
     CMat J(n, n);
-    evaluate(shape, mid.data(), nullptr, y, scratch, f, &J, nullptr);
+    evaluate(shape, mid.data(), nullptr, y, scratch, nullptr, &J, nullptr);
     if (!finiteMatrix(J)) return false;
     const CMat Y = Eigen::PartialPivLU<CMat>(J).inverse();
     if (!finiteMatrix(Y)) return false;
@@ -135,9 +134,9 @@ struct Certifier::Impl {
     if (complex_coefficients) return false;  // a complex member has no real test
     const int n = shape.variables();
     if (!(r > 0.0) || !std::isfinite(r)) return false;
-    CVec yc = y.cast<Complex>(), f(n);
+    const CVec yc = y.cast<Complex>();
     CMat Jc(n, n);
-    evaluate(shape, mid.data(), nullptr, yc, scratch, f, &Jc, nullptr);
+    evaluate(shape, mid.data(), nullptr, yc, scratch, nullptr, &Jc, nullptr);
     const RMat J = Jc.real();
     if (!J.allFinite()) return false;
     const RMat Y = Eigen::PartialPivLU<RMat>(J).inverse();

@@ -75,6 +75,7 @@ CompiledShape::CompiledShape(const SystemShape& shape) : variables_(shape.variab
       p.node = builder.node(reduced);
       p.var = key[i];
       p.power = static_cast<std::uint8_t>(j - i);
+      p.weight = double(p.power);
       partials_.push_back(p);
       i = j;
     }
@@ -106,7 +107,7 @@ CompiledShape::CompiledShape(const SystemShape& shape) : variables_(shape.variab
 // GCC stored each product's parts separately and reloaded them as a pair, a store-forwarding
 // stall per term that took three quarters of the tracking time.
 void evaluate(const CompiledShape& shape, const Complex* c, const Complex* dc, const CVec& x,
-              EvalScratch& scratch, CVec& f, CMat* J, CVec* fs) {
+              EvalScratch& scratch, CVec* f, CMat* J, CVec* fs) {
   const int n = shape.variables();
   const auto& nodes = shape.nodeList();
   double* v = reinterpret_cast<double*>(scratch.values.data());
@@ -120,36 +121,27 @@ void evaluate(const CompiledShape& shape, const Complex* c, const Complex* dc, c
     v[2 * k] = a[0] * b[0] - a[1] * b[1];
     v[2 * k + 1] = a[0] * b[1] + a[1] * b[0];
   }
-  f.setZero(n);
   const auto& tn = shape.termNode();
   const auto& order = shape.termOrder();
-  const bool with_s = fs && dc;
   const double* dcv = reinterpret_cast<const double*>(dc);
-  if (with_s) fs->setZero(n);
-  for (const auto& run : shape.termRuns()) {
-    double re = 0.0, im = 0.0, dre = 0.0, dim = 0.0;
-    if (with_s) {
-      for (std::uint32_t i = run.begin; i < run.end; ++i) {
-        const std::uint32_t t = order[i];
-        const double* m = v + 2 * tn[t];
-        const double* k = cv + 2 * t;
-        const double* d = dcv + 2 * t;
-        re += k[0] * m[0] - k[1] * m[1];
-        im += k[0] * m[1] + k[1] * m[0];
-        dre += d[0] * m[0] - d[1] * m[1];
-        dim += d[0] * m[1] + d[1] * m[0];
-      }
-      (*fs)[run.equation] = Complex(dre, dim);
-    } else {
-      for (std::uint32_t i = run.begin; i < run.end; ++i) {
-        const std::uint32_t t = order[i];
-        const double* m = v + 2 * tn[t];
-        const double* k = cv + 2 * t;
-        re += k[0] * m[0] - k[1] * m[1];
-        im += k[0] * m[1] + k[1] * m[0];
-      }
+  if (!dc) fs = nullptr;
+  if (f) f->setZero(n);
+  if (fs) fs->setZero(n);
+  // Σ k_t m_t over one equation's terms, for the coefficients kv.
+  auto sum = [&](const CompiledShape::Run& run, const double* kv) {
+    double re = 0.0, im = 0.0;
+    for (std::uint32_t i = run.begin; i < run.end; ++i) {
+      const std::uint32_t t = order[i];
+      const double* m = v + 2 * tn[t];
+      const double* k = kv + 2 * t;
+      re += k[0] * m[0] - k[1] * m[1];
+      im += k[0] * m[1] + k[1] * m[0];
     }
-    f[run.equation] = Complex(re, im);
+    return Complex(re, im);
+  };
+  for (const auto& run : shape.termRuns()) {
+    if (f) (*f)[run.equation] = sum(run, cv);
+    if (fs) (*fs)[run.equation] = sum(run, dcv);
   }
   if (!J) return;
   J->setZero(n, n);
@@ -160,7 +152,7 @@ void evaluate(const CompiledShape& shape, const Complex* c, const Complex* dc, c
       const auto& p = partials[i];
       const double* m = v + 2 * p.node;
       const double* k = cv + 2 * p.term;
-      const double w = p.power;
+      const double w = p.weight;
       re += w * (k[0] * m[0] - k[1] * m[1]);
       im += w * (k[0] * m[1] + k[1] * m[0]);
     }

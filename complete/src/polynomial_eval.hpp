@@ -38,6 +38,7 @@ class CompiledShape {
     std::uint16_t node = 0;
     std::uint8_t var = 0;
     std::uint8_t power = 0;
+    double weight = 0.0;  // = power (a conversion less in the inner loop)
   };
 
   int variables() const { return variables_; }
@@ -80,10 +81,10 @@ struct EvalScratch {
   explicit EvalScratch(const CompiledShape& s) : values(s.nodes()) {}
 };
 
-// f = F(x) with coefficients c; J = ∂F/∂x if J; fs = Σ dc_t · m_t(x) if dc and fs (the
+// f = F(x) with coefficients c if f; J = ∂F/∂x if J; fs = Σ dc_t · m_t(x) if dc and fs (the
 // derivative of the homotopy along its parameter when dc are the coefficients' derivatives).
 void evaluate(const CompiledShape& shape, const Complex* c, const Complex* dc, const CVec& x,
-              EvalScratch& scratch, CVec& f, CMat* J, CVec* fs);
+              EvalScratch& scratch, CVec* f, CMat* J, CVec* fs);
 
 // Interval enclosure of F and its Jacobian over a box. X: the box's scalar (a real interval, or
 // ComplexBox below), C: the coefficients' scalar (a real interval or ComplexBox). The caller

@@ -3,9 +3,12 @@
 // p0 → p1 → p2 → p0 through random complex members; a loop permutes the roots, so new ones appear
 // until every root is known. Stop after kStaleLoops loops that add nothing, then cross-check
 // with the total-degree homotopy when the Bézout number is small enough (the trace test is not
-// implemented). Every root is certified (Krawczyk on the member's double coefficients); two
-// roots are taken as one only when a box around both passes the test, so an uncertain case
-// counts two — a count too high only ever makes solveFiber say "not complete".
+// implemented; above the limit, a second monodromy from an independent member). Every root is
+// certified (Krawczyk on the member's double coefficients); two roots are taken as one only when a
+// box around both passes the test, so an uncertain case counts two — a count too high only ever
+// makes solveFiber say "not complete".
+#include "start_system.hpp"
+
 #include <map>
 #include <memory>
 #include <mutex>
@@ -86,30 +89,17 @@ std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& sha
   return out;
 }
 
-std::unique_ptr<StartSystem> compute(const Family& f) {
-  auto out = std::make_unique<StartSystem>();
-  const detail::CompiledShape shape(f.shape());
-  const int n = shape.variables();
+// Monodromy loops at p0 from the roots in `set` until kStaleLoops loops add nothing (or
+// kMaxLoops); returns the loops run.
+int monodromy(const Family& f, const detail::CompiledShape& shape, const std::vector<Complex>& p0,
+              std::uint64_t seed, RootSet& set) {
   const int np = f.parameterCount();
-  const std::uint64_t seed = detail::stableHash(f.signature());
-  std::vector<Complex> p0(np);
-  CVec x0(n);
-  f.seedMember(seed, p0.data(), x0.data());
-  std::vector<Complex> c0(shape.terms());
-  f.coefficients(p0.data(), c0.data());
-  RootSet set(shape, c0.data());
-  set.add(x0);
-  if (set.roots().empty()) {
-    out->params = p0;
-    out->check = "seed root not certified";
-    return out;
-  }
-  // Loop points: complex Gaussian, at the scale of the seed member's parameters.
+  // Loop points: complex Gaussian, at the scale of the member's parameters.
   double scale = 0.0;
   for (const Complex& p : p0) scale += std::norm(p);
   scale = np > 0 ? std::sqrt(scale / np) : 1.0;
   if (!(scale > 0.0)) scale = 1.0;
-  detail::SplitMix64 rng(detail::mixSeed(seed, 1));
+  detail::SplitMix64 rng(seed);
   auto randomPoint = [&] {
     std::vector<Complex> p(np);
     for (auto& v : p) v = scale * rng.complexGaussian();
@@ -126,24 +116,64 @@ std::unique_ptr<StartSystem> compute(const Family& f) {
     for (const CVec& e : x) added += set.add(e) ? 1 : 0;
     stale = added == 0 ? stale + 1 : 0;
   }
-  out->monodromy_loops = loops;
+  return loops;
+}
+
+}  // namespace
+
+namespace detail {
+
+std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout) {
+  auto out = std::make_unique<StartSystem>();
+  const CompiledShape shape(f.shape());
+  const int n = shape.variables();
+  const int np = f.parameterCount();
+  const std::uint64_t seed = stableHash(f.signature());
+  std::vector<Complex> p0(np);
+  CVec x0(n);
+  f.seedMember(seed, p0.data(), x0.data());
+  out->params = p0;
+  std::vector<Complex> c0(shape.terms());
+  f.coefficients(p0.data(), c0.data());
+  RootSet set(shape, c0.data());
+  set.add(x0);
+  if (set.roots().empty()) {
+    out->check = "seed root not certified";
+    return out;
+  }
+  out->monodromy_loops = monodromy(f, shape, p0, mixSeed(seed, 1), set);
   out->check = "monodromy";
-  const std::uint64_t bezout = detail::bezoutNumber(shape);
-  if (bezout > 0 && bezout <= kMaxBezout) {
+  const std::uint64_t bezout = bezoutNumber(shape);
+  if (bezout > 0 && bezout <= max_bezout) {
+    // Cross-check: every root the total-degree homotopy finds, added.
     const std::size_t before = set.roots().size();
-    for (const CVec& e :
-         detail::totalDegreeEndpoints(f.shape(), c0.data(), detail::mixSeed(seed, 2)))
-      set.add(e);
+    for (const CVec& e : totalDegreeEndpoints(f.shape(), c0.data(), mixSeed(seed, 2))) set.add(e);
     out->total_degree_paths = static_cast<int>(bezout);
     out->total_degree_added = static_cast<int>(set.roots().size() - before);
     out->check = "monodromy+total-degree";
+  } else {
+    // Too many Bézout paths: monodromy again from an independent seed member, its roots
+    // carried to p0 and added (a root both runs missed is unlikely; neither is a proof).
+    std::vector<Complex> q0(np), d0(shape.terms());
+    CVec y0(n);
+    f.seedMember(mixSeed(seed, 3), q0.data(), y0.data());
+    f.coefficients(q0.data(), d0.data());
+    RootSet other(shape, d0.data());
+    other.add(y0);
+    if (!other.roots().empty()) monodromy(f, shape, q0, mixSeed(seed, 4), other);
+    out->second_monodromy_roots = static_cast<int>(other.roots().size());
+    const std::size_t before = set.roots().size();
+    for (const CVec& e : trackSegment(f, shape, q0, p0, other.roots())) set.add(e);
+    out->second_monodromy_added = static_cast<int>(set.roots().size() - before);
+    out->check = "monodromy+second-monodromy";
   }
-  out->params = p0;
   for (const CVec& r : set.roots()) out->roots.push_back(r);
   return out;
 }
 
-}  // namespace
+}  // namespace detail
+
+namespace {}  // namespace
 
 const StartSystem& startSystem(const Family& f) {
   // One computation per signature for the process; the lock is held while computing so two
@@ -152,7 +182,8 @@ const StartSystem& startSystem(const Family& f) {
   static std::map<std::string, std::unique_ptr<StartSystem>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto it = cache.find(f.signature());
-  if (it == cache.end()) it = cache.emplace(f.signature(), compute(f)).first;
+  if (it == cache.end())
+    it = cache.emplace(f.signature(), detail::computeStartSystem(f, kMaxBezout)).first;
   return *it->second;
 }
 

@@ -207,8 +207,65 @@ TEST(SolveFiber, SameOutputOnEveryRunAndThread) {
   tb.join();
   expectSame(first, a);
   expectSame(first, b);
+  FiberOptions parallel;
+  parallel.threads = 3;
+  expectSame(first, solveFiber(kStewart, target, parallel));
   const std::vector<double> circles{1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, -3};
+  expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles, parallel));
   expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles));
+}
+
+// A random real dense system through a known real point: complete, the point in one box.
+TEST(SolveFiber, DenseSystemsThroughAKnownPointAreComplete) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const auto& [n, d] : {std::make_pair(3, 2), std::make_pair(2, 3), std::make_pair(4, 2)}) {
+    const testing::DenseFamily f(n, d);
+    std::vector<Complex> x(n);
+    Eigen::VectorXcd known(n);
+    for (int i = 0; i < n; ++i) known[i] = x[i] = u(rng) * 0.5 + 0.25 * i;  // not dyadic
+    const int per = f.parameterCount() / n;
+    std::vector<double> p(f.parameterCount());
+    for (int k = 0; k < n; ++k) {
+      double s = 0.0;
+      for (int j = 0; j + 1 < per; ++j) {
+        p[k * per + j] = u(rng);
+        s += p[k * per + j] * f.monomialValue(k * per + j, x.data()).real();
+      }
+      p[k * per + per - 1] = -s;
+    }
+    const FiberResult res = solveFiber(f, p);
+    EXPECT_TRUE(res.complete) << n << " " << d;
+    expectDisjoint(res);
+    int near = 0;
+    for (const auto& r : res.roots)
+      if (r.real && (r.x - known).cwiseAbs().maxCoeff() < 1e-10) ++near;
+    EXPECT_EQ(near, 1) << n << " " << d;
+  }
+}
+
+// The platform equal to its base (b_i = a_i) with equal legs: at R = I every translation of
+// length d is a pose, a surface of solutions. Its points are singular roots: never certified,
+// never "complete".
+TEST(SolveFiber, APositiveDimensionalFiberIsNeverComplete) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::array<std::array<double, 3>, 6> a{};
+  for (auto& v : a)
+    for (auto& w : v) w = u(rng);
+  testing::StewartPose pose;
+  pose.e = {1.0, 0.0, 0.0, 0.0};
+  pose.g = {0.0, 0.3, -0.2, 0.4};  // t = 2g
+  const auto target = testing::stewartMemberAround(pose, a, a, {1.0, 0.3, -0.6, 0.2});
+  const FiberResult res = solveFiber(kStewart, target);
+  EXPECT_FALSE(res.complete);
+  EXPECT_LT(res.roots.size(), 40u);
+  expectDisjoint(res);
+  // No certified box holds a pose of the surface (R = I, |t| = d).
+  for (const auto& r : res.roots) {
+    const bool identity = std::abs(r.x[1]) + std::abs(r.x[2]) + std::abs(r.x[3]) < 1e-6;
+    EXPECT_FALSE(identity);
+  }
 }
 
 }  // namespace

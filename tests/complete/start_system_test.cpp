@@ -1,5 +1,7 @@
 // Start systems by monodromy, checked against the families' known generic root counts (Bézout
 // for two conics; 40 for the general Stewart–Gough platform: Raghavan 1993, Wampler 1996).
+#include "start_system.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -20,7 +22,7 @@ void expectDistinctRoots(const Family& f, const StartSystem& s) {
   detail::EvalScratch scratch(shape);
   for (std::size_t i = 0; i < s.roots.size(); ++i) {
     detail::CVec fx(shape.variables());
-    detail::evaluate(shape, c.data(), nullptr, detail::CVec(s.roots[i]), scratch, fx, nullptr,
+    detail::evaluate(shape, c.data(), nullptr, detail::CVec(s.roots[i]), scratch, &fx, nullptr,
                      nullptr);
     EXPECT_LT(fx.norm(), 1e-9 * (1.0 + s.roots[i].squaredNorm())) << "root " << i;
     for (std::size_t j = 0; j < i; ++j)
@@ -52,6 +54,38 @@ TEST(StartSystem, StewartGoughHasFortyRoots) {
   EXPECT_EQ(s.check, "monodromy+total-degree");
   EXPECT_EQ(s.total_degree_paths, 128);
   expectDistinctRoots(f, s);
+}
+
+class DenseStartSystem : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+// A generic dense system of n equations of degree d has d^n roots (Bézout).
+TEST_P(DenseStartSystem, FindsTheBezoutNumberOfRoots) {
+  const auto [n, d] = GetParam();
+  const testing::DenseFamily f(n, d);
+  const StartSystem& s = startSystem(f);
+  int expected = 1;
+  for (int i = 0; i < n; ++i) expected *= d;
+  EXPECT_EQ(static_cast<int>(s.roots.size()), expected);
+  EXPECT_EQ(s.total_degree_paths, expected);
+  EXPECT_EQ(s.total_degree_added, 0);  // monodromy had found them all
+  expectDistinctRoots(f, s);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, DenseStartSystem,
+                         ::testing::Values(std::make_pair(1, 4), std::make_pair(2, 3),
+                                           std::make_pair(3, 2), std::make_pair(2, 4),
+                                           std::make_pair(4, 2)));
+
+// Above the Bézout limit the count is cross-checked by a second, independent monodromy run.
+TEST(StartSystem, ASecondMonodromyRunAgreesWhenBezoutIsTooLarge) {
+  const testing::DenseFamily f(3, 2);
+  const auto s = detail::computeStartSystem(f, 4);  // Bézout 8 > 4
+  EXPECT_EQ(s->check, "monodromy+second-monodromy");
+  EXPECT_EQ(s->total_degree_paths, 0);
+  EXPECT_EQ(s->roots.size(), 8u);
+  EXPECT_EQ(s->second_monodromy_roots, 8);
+  EXPECT_EQ(s->second_monodromy_added, 0);
+  expectDistinctRoots(f, *s);
 }
 
 }  // namespace

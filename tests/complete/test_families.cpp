@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <string>
 #include <utility>
 
 namespace relpos::complete::testing {
@@ -133,6 +134,56 @@ void ConicFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root)
       s += params[6 * k + i] * m[i];
     }
     params[6 * k + 5] = -s;  // the root lies on the conic
+  }
+}
+
+DenseFamily::DenseFamily(int n, int d)
+    : signature_("test:dense-" + std::to_string(n) + "-" + std::to_string(d)) {
+  shape_.variables = n;
+  // Every sorted variable list of length ≤ d, the constant last.
+  std::vector<Monomial> monomials;
+  std::function<void(Monomial, int)> grow = [&](Monomial m, int from) {
+    if (m.degree > 0) monomials.push_back(m);
+    if (m.degree == d) return;
+    for (int v = from; v < n; ++v) {
+      Monomial next = m;
+      next.vars[next.degree++] = static_cast<std::uint8_t>(v);
+      grow(next, v);
+    }
+  };
+  grow(Monomial{}, 0);
+  monomials.push_back(Monomial{});
+  for (int k = 0; k < n; ++k)
+    for (const Monomial& m : monomials) addTerm(shape_, k, m);
+}
+
+void DenseFamily::coefficients(const Complex* params, Complex* coeffs) const {
+  for (int i = 0; i < parameterCount(); ++i) coeffs[i] = params[i];
+}
+void DenseFamily::coefficients(const Interval* params, Interval* coeffs) const {
+  for (int i = 0; i < parameterCount(); ++i) coeffs[i] = params[i];
+}
+
+Complex DenseFamily::monomialValue(int term, const Complex* x) const {
+  const Monomial& m = shape_.monomials[shape_.terms[term].monomial];
+  Complex v = 1.0;
+  for (int j = 0; j < m.degree; ++j) v *= x[m.vars[j]];
+  return v;
+}
+
+void DenseFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root) const {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g;
+  for (int i = 0; i < shape_.variables; ++i) root[i] = {g(rng), g(rng)};
+  const int per = parameterCount() / shape_.variables;
+  for (int k = 0; k < shape_.variables; ++k) {
+    Complex s = 0.0;
+    for (int j = 0; j + 1 < per; ++j) {
+      const int t = k * per + j;
+      params[t] = {g(rng), g(rng)};
+      s += params[t] * monomialValue(t, root);
+    }
+    params[k * per + per - 1] = -s;  // the constant term
   }
 }
 

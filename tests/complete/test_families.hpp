@@ -28,6 +28,27 @@ class ConicFamily : public Family {
   SystemShape shape_;
 };
 
+// n equations in n unknowns, each with every monomial of degree ≤ d, coefficients = params
+// (equation-major, monomials in shape() order): generic root count d^n (Bézout).
+class DenseFamily : public Family {
+ public:
+  DenseFamily(int n, int d);
+  const std::string& signature() const override { return signature_; }
+  const SystemShape& shape() const override { return shape_; }
+  int parameterCount() const override { return static_cast<int>(shape_.terms.size()); }
+  int coefficientDegree() const override { return 1; }
+  void coefficients(const Complex* params, Complex* coeffs) const override;
+  void coefficients(const Interval* params, Interval* coeffs) const override;
+  // Random coefficients; each equation's constant term makes `root` a root.
+  void seedMember(std::uint64_t seed, Complex* params, Complex* root) const override;
+  // The monomial of term t at x (to build members through known points).
+  Complex monomialValue(int term, const Complex* x) const;
+
+ private:
+  std::string signature_;
+  SystemShape shape_;
+};
+
 // x = (e0..e3, g0..g3). Equations: Study quadric e·g = 0; leg 1 |e b1 − a1 e + 2g|² − d1² |e|²;
 // legs 2..6 minus leg 1; chart c·e − 1. params: c (4), then per leg a (3), b (3), d² (1).
 class StewartFamily : public Family {

@@ -6,11 +6,12 @@
 // endpoint (certify.hpp). The engine (homotopy, certification, start systems) sees only this
 // interface; the encodings of relpos's constraints (encoding.hpp) implement it.
 #include <array>
-#include <boost/numeric/interval.hpp>
 #include <complex>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <boost/numeric/interval.hpp>
 
 namespace relpos::complete {
 
