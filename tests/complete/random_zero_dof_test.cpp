@@ -22,19 +22,42 @@ namespace relpos::test {
 namespace {
 
 constexpr int kShards = 8;
-constexpr int kPerShard = 64;  // 512 problems in all
+constexpr int kPerShard = 66;           // 528 problems in all
+constexpr int kStructuresPerShard = 3;  // 24 structures, each with 22 random geometries
 constexpr double kPi = 3.14159265358979323846;
 
-// One random constraint on mobile feature `name` (a point or a line at X*), its fixed feature
-// new and placed to fit, its value read off at X*; values kept away from the singular ones (a
-// zero distance, an angle of 0 or π) where a residual is not smooth.
+// The structure of a problem: its mobile features (points and lines) and, per constraint, the
+// feature it holds and its kind (0-2, read per feature kind by addRandomConstraint). The
+// numeric stage computes a start system once per structure (a constraint signature) and keeps
+// it for the process, so the problems are drawn as random geometries over a pool of random
+// structures: 24 signatures, 22 problems each, instead of 528 signatures (each a monodromy run
+// of ~1 s). RandomZeroDof.FreshStructures draws a new structure for every problem.
+struct Structure {
+  std::vector<bool> is_point;
+  std::vector<int> feature;  // per constraint
+  std::vector<int> kind;     // per constraint
+};
+
+Structure randomStructure(Rng& rng) {
+  Structure st;
+  const int features = rng.integer(2, 4);
+  for (int k = 0; k < features; ++k) st.is_point.push_back(k == 0 || rng.integer(0, 1) == 0);
+  for (int c = 0; c < 6; ++c) {
+    st.feature.push_back(c < features ? c : rng.integer(0, features - 1));
+    st.kind.push_back(rng.integer(0, 2));
+  }
+  return st;
+}
+
+// One random constraint of `kind` on mobile feature `name` (a point or a line at X*), its fixed
+// feature new and placed to fit, its value read off at X*; values kept away from the singular
+// ones (a zero distance, an angle of 0 or π) where a residual is not smooth.
 void addRandomConstraint(Problem& p, const Isometry3d& X, const std::string& name,
-                         const Feature& mobile, Rng& rng, int index) {
+                         const Feature& mobile, int kind, Rng& rng, int index) {
   const std::string fixed = "F" + std::to_string(index);
   const Feature w = mobile.placed(X);
   if (mobile.kind == FeatureKind::kPoint) {
     for (;;) {
-      const int kind = rng.integer(0, 2);
       Feature f;
       double v;
       if (kind == 0) {
@@ -54,7 +77,6 @@ void addRandomConstraint(Problem& p, const Isometry3d& X, const std::string& nam
     }
   }
   for (;;) {
-    const int kind = rng.integer(0, 2);
     Feature f;
     double v;
     if (kind == 0) {  // angle line-line, arccos(d̂₁·d̂₂)
@@ -86,21 +108,21 @@ struct ZeroDofProblem {
   std::string label;
 };
 
-// Problem `index`: 2-4 mobile features (at least one point), six constraints, every feature
-// used; redrawn until X* is isolated with a well-conditioned Jacobian.
-ZeroDofProblem makeProblem(int index) {
-  Rng rng(0x5eed0000u + static_cast<std::uint64_t>(index));
+// A problem of structure `st` (2-4 mobile features, at least one point, six constraints, every
+// feature used), its geometry from `seed`; redrawn until X* is isolated with a well-conditioned
+// Jacobian.
+ZeroDofProblem makeProblemOf(const Structure& st, std::uint64_t seed, const std::string& name) {
+  Rng rng(seed);
   for (;;) {
     ZeroDofProblem z;
     Problem& p = z.problem;
-    p.name = "random-zero-dof-" + std::to_string(index);
+    p.name = name;
     z.X_star = rng.pose();
-    const int features = rng.integer(2, 4);
     std::vector<std::string> names;
     std::vector<Feature> mobile;
     std::ostringstream label;
-    for (int k = 0; k < features; ++k) {
-      const bool point = k == 0 || rng.integer(0, 1) == 0;
+    for (std::size_t k = 0; k < st.is_point.size(); ++k) {
+      const bool point = st.is_point[k];
       const Feature f = point ? Feature::makePoint(rng.point(1.0))
                               : Feature::makeLine(rng.point(1.0), rng.unit());
       names.push_back(std::string(point ? "p" : "l") + std::to_string(k));
@@ -109,8 +131,11 @@ ZeroDofProblem makeProblem(int index) {
       label << names.back();
     }
     for (int c = 0; c < 6; ++c) {
-      const int k = c < features ? c : rng.integer(0, features - 1);
-      addRandomConstraint(p, z.X_star, names[k], mobile[k], rng, c);
+      const int k = st.feature[static_cast<std::size_t>(c)];
+      addRandomConstraint(p, z.X_star, names[static_cast<std::size_t>(k)],
+                          mobile[static_cast<std::size_t>(k)], st.kind[static_cast<std::size_t>(c)],
+                          rng, c);
+      label << (c ? "," : ":") << k << "/" << st.kind[static_cast<std::size_t>(c)];
     }
     // The initial pose: unrelated to X*.
     p.mobile.pose = rng.pose();
@@ -122,16 +147,39 @@ ZeroDofProblem makeProblem(int index) {
   }
 }
 
+// Structure s of the pool (s = 0 … kShards · kStructuresPerShard − 1).
+Structure poolStructure(int s) {
+  Rng rng(0x57c0000u + static_cast<std::uint64_t>(s));
+  return randomStructure(rng);
+}
+
+// Problem `index`: shard index / kPerShard draws over its own structures of the pool.
+ZeroDofProblem makeProblem(int index) {
+  const int shard = index / kPerShard;
+  const int structure = shard * kStructuresPerShard + index % kStructuresPerShard;
+  return makeProblemOf(poolStructure(structure), 0x5eed0000u + static_cast<std::uint64_t>(index),
+                       "random-zero-dof-" + std::to_string(index));
+}
+
+// Problem `index` of a fresh structure (its own signature).
+ZeroDofProblem makeFreshProblem(int index) {
+  Rng rng(0xf7e5000u + static_cast<std::uint64_t>(index));
+  const Structure st = randomStructure(rng);
+  return makeProblemOf(st, 0xf7e5800u + static_cast<std::uint64_t>(index),
+                       "random-zero-dof-fresh-" + std::to_string(index));
+}
+
 class RandomZeroDof : public ::testing::TestWithParam<int> {};
 
-TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
+// Checks problems make(first) … make(first + count − 1); label names them in the report.
+void checkProblems(ZeroDofProblem (*make)(int), int first, int count, const std::string& label) {
   int failures = 0, unsolved = 0, claimed_complete = 0, complete_but_failed = 0;
   std::ostringstream report;
   auto fail = [&](const ZeroDofProblem& z, const std::string& what) {
     if (++failures <= 8) report << "\n  " << z.label << ": " << what;
   };
-  for (int i = 0; i < kPerShard; ++i) {
-    const ZeroDofProblem z = makeProblem(GetParam() * kPerShard + i);
+  for (int i = 0; i < count; ++i) {
+    const ZeroDofProblem z = make(first + i);
     const Problem& p = z.problem;
     const Solution s = solve(p, builtinRegistry());
     if (s.status != Status::kSolved) {
@@ -180,10 +228,20 @@ TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
                     describeBranches(s));
     if (failures > failures_before) ++complete_but_failed;
   }
-  std::cout << "shard " << GetParam() << ": " << kPerShard << " problems, " << unsolved
-            << " not solved, " << claimed_complete << " claimed complete (" << complete_but_failed
+  std::cout << label << ": " << count << " problems, " << unsolved << " not solved, "
+            << claimed_complete << " claimed complete (" << complete_but_failed
             << " of them failing a check)\n";
   EXPECT_EQ(failures, 0) << failures << " failures, the first:" << report.str();
+}
+
+TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
+  checkProblems(&makeProblem, GetParam() * kPerShard, kPerShard,
+                "shard " + std::to_string(GetParam()));
+}
+
+// Every problem its own structure: a start system computed per problem.
+TEST(RandomZeroDofFresh, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
+  checkProblems(&makeFreshProblem, 0, 12, "fresh structures");
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, RandomZeroDof, ::testing::Range(0, kShards));
@@ -192,8 +250,13 @@ INSTANTIATE_TEST_SUITE_P(Shards, RandomZeroDof, ::testing::Range(0, kShards));
 // mixes the kinds the issue names.
 TEST(RandomZeroDofGenerator, ProblemsAreIsolatedAndMixed) {
   int points = 0, lines = 0, angles = 0, distances = 0;
-  for (int i = 0; i < 64; ++i) {
-    const ZeroDofProblem z = makeProblem(i);
+  // Two problems of every structure of the pool (problem index → structure: makeProblem).
+  for (int i = 0; i < 2 * kShards * kStructuresPerShard; ++i) {
+    const int structure = i % (kShards * kStructuresPerShard);
+    const int shard = structure / kStructuresPerShard;
+    const ZeroDofProblem z =
+        makeProblem(shard * kPerShard + structure % kStructuresPerShard +
+                    kStructuresPerShard * (i / (kShards * kStructuresPerShard)));
     EXPECT_EQ(z.problem.constraints.size(), 6u);
     EXPECT_LT(worstViolation(z.problem, z.X_star), 1e-12);
     int rank = 0;
