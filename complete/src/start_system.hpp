@@ -8,6 +8,9 @@
 
 namespace relpos::complete::detail {
 
+// The Bézout limit startSystem uses (and the generator of the stored start systems).
+inline constexpr std::uint64_t kDefaultMaxBezout = 4096;
+
 // Above max_bezout the count is cross-checked by a second monodromy instead.
 std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout);
 

@@ -28,10 +28,16 @@ struct StartSystem {
   int total_degree_added = 0;
   int second_monodromy_roots = 0;  // the second run's own count, when it ran
   int second_monodromy_added = 0;
+  // Read from the start systems stored in the repository (data/start_systems, compiled in)
+  // rather than computed in this process; check says how the generator checked it (added for
+  // issue 15's stored start systems).
+  bool stored = false;
 };
 
-// The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
-// by the signature, so the same on every run) and kept for the process; thread-safe.
+// The start system of f's signature: the one stored in the repository for it when there is one
+// (data/start_systems, compiled into the library, checked against f on first use), else computed
+// on first use (monodromy from f.seedMember, seeded by the signature, so the same on every run);
+// kept for the process; thread-safe.
 const StartSystem& startSystem(const Family& f);
 
 struct CertifiedRoot {
