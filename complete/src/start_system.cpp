@@ -123,12 +123,13 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
 
 namespace detail {
 
-std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout) {
+std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
+                                                std::uint64_t seed) {
   auto out = std::make_unique<StartSystem>();
   const CompiledShape shape(f.shape());
   const int n = shape.variables();
   const int np = f.parameterCount();
-  const std::uint64_t seed = stableHash(f.signature());
+  if (seed == 0) seed = stableHash(f.signature());
   std::vector<Complex> p0(np);
   CVec x0(n);
   f.seedMember(seed, p0.data(), x0.data());

@@ -175,8 +175,14 @@ bool certifyStartSystem(const Family& f, const StartSystem& s, std::string* why)
 }
 
 std::unique_ptr<StartSystem> loadStoredStartSystem(const Family& f, std::string* why) {
+  return loadStoredStartSystem(f, embeddedStartSystems(), why);
+}
+
+std::unique_ptr<StartSystem> loadStoredStartSystem(const Family& f,
+                                                   const std::vector<EmbeddedText>& table,
+                                                   std::string* why) {
   const std::string name = storedFileName(f.signature());
-  for (const EmbeddedText& e : embeddedStartSystems()) {
+  for (const EmbeddedText& e : table) {
     if (name != e.name) continue;
     StoredStartSystem s;
     std::string reason;

@@ -47,6 +47,10 @@ const std::vector<EmbeddedText>& embeddedStartSystems();
 // pairwise disjoint (a stored file that no longer fits its family is not used). nullptr when
 // there is none or it fails (*why says which, if not null).
 std::unique_ptr<StartSystem> loadStoredStartSystem(const Family& f, std::string* why = nullptr);
+// The same from another table (tests).
+std::unique_ptr<StartSystem> loadStoredStartSystem(const Family& f,
+                                                   const std::vector<EmbeddedText>& table,
+                                                   std::string* why);
 
 // Whether the roots of s are distinct certified roots of f's member at s.params (the check above).
 bool certifyStartSystem(const Family& f, const StartSystem& s, std::string* why);
