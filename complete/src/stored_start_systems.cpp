@@ -108,7 +108,7 @@ bool parseStoredStartSystem(const std::string& text, StoredStartSystem* out, std
     std::istringstream c(rest);
     StartSystem& t = s.system;
     if (!(c >> t.monodromy_loops >> t.total_degree_paths >> t.total_degree_added >>
-          t.second_monodromy_roots >> t.second_monodromy_added))
+          t.second_monodromy_roots >> t.second_monodromy_added >> t.trace_witness_points))
       return fail("bad counts line");
   }
   int np = -1, nr = -1, nv = -1;

@@ -11,7 +11,7 @@
 //   source <spec file the generator encoded, relative to the repository> <alternative>
 //   check <StartSystem::check>
 //   counts <monodromy_loops> <total_degree_paths> <total_degree_added>
-//          <second_monodromy_roots> <second_monodromy_added>
+//          <second_monodromy_roots> <second_monodromy_added> <trace_witness_points>
 //   params <P>            then P lines "re im"
 //   roots <N> <n>         then N lines of n "re im" pairs
 #include <memory>

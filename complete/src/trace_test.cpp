@@ -18,6 +18,7 @@ namespace {
 constexpr int kMaxLoops = 60;
 constexpr int kStaleLoops = 12;
 constexpr double kTraceTolerance = 1e-7;
+constexpr int kAttempts = 3;
 
 // The curve {(x, t) : Σ (c0 + t c1) m(x) = 0} cut by the hyperplane λ·(x, t) = s; parameters
 // (λ_0..λ_n, s). Only complex coefficients: it is tracked and certified as a complex system.
@@ -148,9 +149,8 @@ bool affineAlong(const Family& f, const std::vector<Complex>& p, const std::vect
   return second <= 1e-11 * (1.0 + scale);
 }
 
-}  // namespace
-
-TraceOutcome traceTest(const Family& f, const StartSystem& s, std::uint64_t seed) {
+// One attempt: its own line, slices and loops from `seed`.
+TraceOutcome traceOnce(const Family& f, const StartSystem& s, std::uint64_t seed) {
   TraceOutcome out;
   auto fail = [&](std::string why) {
     out.why = std::move(why);
@@ -315,6 +315,21 @@ TraceOutcome traceTest(const Family& f, const StartSystem& s, std::uint64_t seed
   for (const CVec& x : recovered.points())
     if (moved.add(x) != 0) return fail("a fibre point the start system does not hold");
   out.passed = true;
+  return out;
+}
+
+}  // namespace
+
+// Monodromy on the slice may stall short of the witness set (a point reached only around a few
+// branch points): a new attempt (another line and slices) rather than more loops of the same.
+TraceOutcome traceTest(const Family& f, const StartSystem& s, std::uint64_t seed) {
+  TraceOutcome out;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    out = traceOnce(f, s, mixSeed(seed, attempt));
+    out.attempts = attempt + 1;
+    // A fibre point the start system lacks is an answer, not a stall.
+    if (out.passed || out.fibre_roots > static_cast<int>(s.roots.size())) break;
+  }
   return out;
 }
 

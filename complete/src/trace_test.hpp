@@ -36,7 +36,8 @@ struct TraceOutcome {
   int affine_parameters = 0;  // dim S
   int witness_points = 0;     // deg C1 (the witness set's size when the trace was affine)
   int fibre_roots = 0;        // distinct certified points of V1's fibre recovered from W
-  int loops = 0;              // monodromy loops filling W
+  int loops = 0;              // monodromy loops filling W (the last attempt's)
+  int attempts = 0;           // attempts run (each its own line, slices and loops)
   double trace_residual = 0;  // relative departure of the trace from an affine function
 };
 

@@ -2,10 +2,10 @@
 // LIST names spec files (one a line, relative to ROOT; '#' starts a comment); each is encoded
 // as the numeric stage encodes it (a line family when the mobile features lie on one line, else
 // a pose family per "either" alternative) and the start system of every new signature computed
-// by monodromy with the total-degree or second-monodromy cross-check (start_system.hpp), certified
-// and written to OUT_DIR/<hash>.txt. Deterministic (seeded by the signature): running it again
-// rewrites the same files. Exit status 1 if a spec cannot be read or encoded or a start system
-// fails its certification.
+// by monodromy with the total-degree or second-monodromy cross-check (start_system.hpp), checked
+// by the trace test where it applies (trace_test.hpp), certified and written to OUT_DIR/<hash>.txt.
+// Deterministic (seeded by the signature): running it again rewrites the same files. Exit status 1
+// if a spec cannot be read or encoded or a start system fails its certification.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -16,12 +16,14 @@
 #include <string>
 #include <vector>
 
+#include "random.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/complete/encoding.hpp"
 #include "relpos/complete/problem_encoding.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "start_system.hpp"
 #include "stored_start_systems.hpp"
+#include "trace_test.hpp"
 
 namespace {
 
@@ -92,6 +94,17 @@ int main(int argc, char** argv) {
       const auto t0 = std::chrono::steady_clock::now();
       const std::unique_ptr<StartSystem> s =
           detail::computeStartSystem(f, detail::kDefaultMaxBezout);
+      // The trace test (trace_test.hpp) where it applies: "+trace" in the check when it passed.
+      const detail::TraceOutcome trace =
+          detail::traceTest(f, *s, detail::mixSeed(detail::stableHash(f.signature()), 5));
+      if (trace.passed) {
+        s->check += "+trace";
+        s->trace_witness_points = trace.witness_points;
+      } else {
+        std::cerr << spec << ": trace test not passed: " << trace.why << "\n";
+        // More fibre points than the start system holds: the start system is incomplete.
+        if (trace.fibre_roots > static_cast<int>(s->roots.size())) status = 1;
+      }
       const double sec =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::string fail;

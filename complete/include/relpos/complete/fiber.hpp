@@ -21,13 +21,16 @@ struct StartSystem {
   // How the count was checked (added for issue 15's engine): "monodromy+total-degree" (the
   // Bézout homotopy's roots added: total_degree_added of them were new to monodromy) or, when
   // the Bézout number is above 4096, "monodromy+second-monodromy" (a monodromy run from an
-  // independent member, its roots carried over and added). Neither is a proof (no trace test).
+  // independent member, its roots carried over and added). Neither is a proof. The generator of
+  // the stored start systems appends "+trace" when the trace test passed (trace_test.hpp: every
+  // root of the family's main component is held, conditional on correct path tracking).
   std::string check;
   int monodromy_loops = 0;
   int total_degree_paths = 0;  // 0: the Bézout number was above the limit, not run
   int total_degree_added = 0;
   int second_monodromy_roots = 0;  // the second run's own count, when it ran
   int second_monodromy_added = 0;
+  int trace_witness_points = 0;  // the trace test's witness set (0: not run or not passed)
   // Read from the start systems stored in the repository (data/start_systems, compiled in)
   // rather than computed in this process; check says how the generator checked it (added for
   // issue 15's stored start systems).
