@@ -73,7 +73,8 @@ std::string formatStoredStartSystem(const StoredStartSystem& s) {
   o << "source " << s.source << '\n';
   o << "check " << t.check << '\n';
   o << "counts " << t.monodromy_loops << ' ' << t.total_degree_paths << ' ' << t.total_degree_added
-    << ' ' << t.second_monodromy_roots << ' ' << t.second_monodromy_added << '\n';
+    << ' ' << t.second_monodromy_roots << ' ' << t.second_monodromy_added << ' '
+    << t.trace_witness_points << '\n';
   o << "params " << t.params.size() << '\n';
   for (const Complex& p : t.params) {
     writeComplex(o, p);

@@ -274,14 +274,16 @@ TraceOutcome traceOnce(const Family& f, const StartSystem& s, std::uint64_t seed
     return std::abs(slope1 - slope2) / (1.0 + size);
   };
 
-  int stale = 0;
+  int stale = 0, lost = 0, uncertified = 0;
   double residual = traceResidual(W.points());
   while (!(residual >= 0.0 && residual <= kTraceTolerance)) {
     if (out.loops >= kMaxLoops || stale >= kStaleLoops) {
       out.witness_points = static_cast<int>(W.size());
       out.trace_residual = residual;
       return fail("the trace did not become affine (" + std::to_string(W.size()) +
-                  " witness points)");
+                  " witness points, " + std::to_string(out.loops) + " loops, residual " +
+                  std::to_string(residual) + ", " + std::to_string(lost) + " paths lost, " +
+                  std::to_string(uncertified) + " endpoints not certified)");
     }
     ++out.loops;
     const std::vector<Complex> r1 = randomSlice(), r2 = randomSlice();
@@ -290,11 +292,18 @@ TraceOutcome traceOnce(const Family& f, const StartSystem& s, std::uint64_t seed
     for (const Leg& leg : {Leg(&qB, &r1), Leg(&r1, &r2), Leg(&r2, &qB)}) {
       next.clear();
       for (const PathEnd& e : track(*slice, yshape, *leg.first, *leg.second, 1.0, y))
-        if (e.status == PathStatus::kFinite) next.push_back(e.x);
+        if (e.status == PathStatus::kFinite)
+          next.push_back(e.x);
+        else
+          ++lost;
       y = next;
     }
     int added = 0;
-    for (const CVec& e : y) added += W.add(e) == 1 ? 1 : 0;
+    for (const CVec& e : y) {
+      const int a = W.add(e);
+      added += a == 1 ? 1 : 0;
+      uncertified += a < 0 ? 1 : 0;
+    }
     stale = added == 0 ? stale + 1 : 0;
     if (added > 0 || residual < 0.0) residual = traceResidual(W.points());
   }
