@@ -18,7 +18,7 @@ namespace {
 constexpr int kMaxLoops = 60;
 constexpr int kStaleLoops = 12;
 constexpr double kTraceTolerance = 1e-7;
-constexpr int kAttempts = 3;
+constexpr int kAttempts = 8;
 
 // The curve {(x, t) : Σ (c0 + t c1) m(x) = 0} cut by the hyperplane λ·(x, t) = s; parameters
 // (λ_0..λ_n, s). Only complex coefficients: it is tracked and certified as a complex system.
