@@ -106,19 +106,21 @@ s = Spec('six-point-planes')
 for pl, b in zip(planes(6), pts('b', 6)):
     s.contact(pl, b)
 s.write()
-s = Spec('three-legs-three-planes')
-bs = pts('b', 6)
-for a, b in zip(pts('a', 3), bs[:3]):
-    s.leg(a, b)
-for pl, b in zip(planes(3), bs[3:]):
-    s.contact(pl, b)
-s.write()
-s = Spec('five-legs-one-plane')
-bs = pts('b', 6)
-for a, b in zip(pts('a', 5), bs[:5]):
-    s.leg(a, b)
-s.contact(planes(1)[0], bs[5])
-s.write()
+
+
+def legs_and_contacts(name, legs):
+    """legs distance legs, then 6 - legs point-plane contacts, on six mobile points."""
+    s = Spec(name)
+    bs = pts('b', 6)
+    for a, b in zip(pts('a', legs), bs[:legs]):
+        s.leg(a, b)
+    for pl, b in zip(planes(6 - legs), bs[legs:]):
+        s.contact(pl, b)
+    s.write()
+
+
+legs_and_contacts('three-legs-three-planes', 3)
+legs_and_contacts('five-legs-one-plane', 5)
 s = Spec('two-angles-four-legs')
 s.angle(('u1', unit()), ('m1', unit()))
 s.angle(('u2', unit()), ('m2', unit()))
