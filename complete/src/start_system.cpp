@@ -17,6 +17,7 @@
 #include "krawczyk.hpp"
 #include "random.hpp"
 #include "relpos/complete/fiber.hpp"
+#include "stored_start_systems.hpp"
 #include "total_degree.hpp"
 
 namespace relpos::complete {
@@ -26,7 +27,6 @@ using detail::CVec;
 
 constexpr int kStaleLoops = 8;
 constexpr int kMaxLoops = 400;
-constexpr std::uint64_t kMaxBezout = 4096;
 
 double normInf(const CVec& x) {
   double m = 0.0;
@@ -123,12 +123,13 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
 
 namespace detail {
 
-std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout) {
+std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
+                                                std::uint64_t seed) {
   auto out = std::make_unique<StartSystem>();
   const CompiledShape shape(f.shape());
   const int n = shape.variables();
   const int np = f.parameterCount();
-  const std::uint64_t seed = stableHash(f.signature());
+  if (seed == 0) seed = stableHash(f.signature());
   std::vector<Complex> p0(np);
   CVec x0(n);
   f.seedMember(seed, p0.data(), x0.data());
@@ -173,8 +174,6 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
 
 }  // namespace detail
 
-namespace {}  // namespace
-
 const StartSystem& startSystem(const Family& f) {
   // One computation per signature for the process; the lock is held while computing so two
   // threads asking for the same signature compute it once.
@@ -182,8 +181,13 @@ const StartSystem& startSystem(const Family& f) {
   static std::map<std::string, std::unique_ptr<StartSystem>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto it = cache.find(f.signature());
-  if (it == cache.end())
-    it = cache.emplace(f.signature(), detail::computeStartSystem(f, kMaxBezout)).first;
+  if (it == cache.end()) {
+    // The stored one first (deterministic: always preferred for its signature); a stored file
+    // that fails its check against f is ignored and the start system computed.
+    std::unique_ptr<StartSystem> s = detail::loadStoredStartSystem(f);
+    if (!s) s = detail::computeStartSystem(f, detail::kDefaultMaxBezout);
+    it = cache.emplace(f.signature(), std::move(s)).first;
+  }
   return *it->second;
 }
 

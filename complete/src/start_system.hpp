@@ -8,7 +8,13 @@
 
 namespace relpos::complete::detail {
 
+// The Bézout limit startSystem uses (and the generator of the stored start systems).
+inline constexpr std::uint64_t kDefaultMaxBezout = 4096;
+
 // Above max_bezout the count is cross-checked by a second monodromy instead.
-std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout);
+// seed (0: the signature's stable hash, what startSystem uses) picks the generic member and the
+// monodromy loops; another seed gives an independent computation of the same count.
+std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
+                                                std::uint64_t seed = 0);
 
 }  // namespace relpos::complete::detail

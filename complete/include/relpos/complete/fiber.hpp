@@ -21,17 +21,26 @@ struct StartSystem {
   // How the count was checked (added for issue 15's engine): "monodromy+total-degree" (the
   // Bézout homotopy's roots added: total_degree_added of them were new to monodromy) or, when
   // the Bézout number is above 4096, "monodromy+second-monodromy" (a monodromy run from an
-  // independent member, its roots carried over and added). Neither is a proof (no trace test).
+  // independent member, its roots carried over and added). Neither is a proof. The generator of
+  // the stored start systems appends "+trace" when the trace test passed (trace_test.hpp: every
+  // root of the family's main component is held, conditional on correct path tracking).
   std::string check;
   int monodromy_loops = 0;
   int total_degree_paths = 0;  // 0: the Bézout number was above the limit, not run
   int total_degree_added = 0;
   int second_monodromy_roots = 0;  // the second run's own count, when it ran
   int second_monodromy_added = 0;
+  int trace_witness_points = 0;  // the trace test's witness set (0: not run or not passed)
+  // Read from the start systems stored in the repository (data/start_systems, compiled in)
+  // rather than computed in this process; check says how the generator checked it (added for
+  // issue 15's stored start systems).
+  bool stored = false;
 };
 
-// The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
-// by the signature, so the same on every run) and kept for the process; thread-safe.
+// The start system of f's signature: the one stored in the repository for it when there is one
+// (data/start_systems, compiled into the library, checked against f on first use), else computed
+// on first use (monodromy from f.seedMember, seeded by the signature, so the same on every run);
+// kept for the process; thread-safe.
 const StartSystem& startSystem(const Family& f);
 
 struct CertifiedRoot {
