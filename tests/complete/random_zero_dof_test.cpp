@@ -6,6 +6,9 @@
 // list complete while the random-start Newton reference finds a pose it does not hold.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 #include "completeness_fields.hpp"
@@ -181,7 +184,12 @@ void checkProblems(ZeroDofProblem (*make)(int), int first, int count, const std:
   for (int i = 0; i < count; ++i) {
     const ZeroDofProblem z = make(first + i);
     const Problem& p = z.problem;
+    const auto t0 = std::chrono::steady_clock::now();
     const Solution s = solve(p, builtinRegistry());
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (ms > 1000.0 || std::getenv("RELPOS_TEST_TIMES"))
+      std::cout << z.label << ": " << toString(s.status) << " in " << ms << " ms\n" << std::flush;
     if (s.status != Status::kSolved) {
       ++unsolved;
       fail(z, std::string("status ") + toString(s.status) + ": " + s.message);
