@@ -79,6 +79,8 @@ int cmdRules(const Args& a, const Registry& reg) {
     for (const auto& k : reg.customKinds())
       std::cout << "  " << k.name << "  [" << k.origin << "]  " << k.description << "\n";
   }
+  if (const relpos::FallbackInfo* stage = reg.fallback())  // docs/spec.md §8
+    std::cout << "numeric stage:\n  " << stage->name << "  [" << stage->origin << "]\n";
   return kExitOk;
 }
 

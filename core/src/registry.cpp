@@ -109,6 +109,17 @@ std::uint16_t Registry::addCustomKind(CustomKindInfo k) {
   return static_cast<std::uint16_t>(custom_kinds_.size() - 1);
 }
 
+void Registry::setFallback(FallbackInfo f, bool replace) {
+  checkOpen();
+  if (!f.fn) throw std::invalid_argument("fallback '" + f.name + "' has no function");
+  if (fallback_.fn && !replace && !allow_replace_)
+    throw std::invalid_argument("fallback '" + f.name + "': the numeric stage '" + fallback_.name +
+                                "' is already registered (by " + fallback_.origin + ")");
+  if (!origin_.empty()) f.origin = origin_;
+  f.library = origin_.empty() ? nullptr : origin_library_;
+  fallback_ = std::move(f);
+}
+
 const CustomKindInfo* Registry::customKind(const std::string& name) const {
   for (const auto& k : custom_kinds_)
     if (k.name == name) return &k;

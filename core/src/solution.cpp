@@ -41,6 +41,7 @@ Solution::Solution() {
 
 void Solution::clear() {
   status = Status::kNotSolved;
+  complete = false;
   message.clear();
   branches.clear();
   conflicts.clear();

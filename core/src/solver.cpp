@@ -6,7 +6,9 @@
 #include <limits>
 #include <string>
 
+#include "branch_check.hpp"
 #include "centring.hpp"
+#include "fallback.hpp"
 #include "relpos/core/branch_sink.hpp"
 
 namespace relpos {
@@ -330,6 +332,10 @@ bool allRevolved(const Solution& solution, std::size_t first) {
   return true;
 }
 
+}  // namespace
+
+namespace detail {
+
 // What would make a branch unusable without any exception to catch later: no manifold, no type
 // name, more parameters than a pose has room for (Params: kMaxDof), a parameter without a name
 // (the writer copies them). `call` names the method running, should one of them throw. These are
@@ -356,6 +362,10 @@ std::string unusable(const ManifoldHolder& holder, const char*& type, const char
   return "";
 }
 
+}  // namespace detail
+
+namespace {
+
 // A plugin's branches are checked here, under the guard, before anything else uses them: a
 // manifold that would overrun the writer, or whose cheap methods throw, is an `unhandled` answer
 // naming the plugin. Each branch also records its plugin (Branch::origin), for what its other
@@ -373,9 +383,11 @@ bool checkPluginBranches(SolveState& st, const MatcherInfo& matcher, std::size_t
              "' from matcher '" + matcher.name + "'" + originNote(matcher.origin);
     };
     if (!guarded(
-            st, [&] { problem = unusable(branch.manifold, type, call); },
+            st, [&] { problem = detail::unusable(branch.manifold, type, call); },
             [&] { return item(true); }))
       return false;
+    // A matcher's branch is a closed form: only the numeric stage reports certified ones.
+    if (problem.empty() && !branch.exact) problem = "a matcher's branch is not exact";
     if (!problem.empty()) {
       setUnhandled(st, item(false) + " is unusable: " + problem);
       return false;
@@ -528,6 +540,10 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   return true;
 }
 
+}  // namespace
+
+namespace detail {
+
 // The last check before a solution leaves the solver: one pose of every branch, evaluated against
 // every input constraint by its type's own reading of the spec (ConstraintType::violation), not
 // by the rules that built the branch. A branch that breaks a constraint by far more than any
@@ -587,7 +603,7 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
   }
 }
 
-}  // namespace
+}  // namespace detail
 
 void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
            Workspace& ws, Solution& solution) {
@@ -595,7 +611,14 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
   Tolerance tol;
   if (!solveOnce(problem, registry, options, true, ws, solution, tol))
     solveOnce(problem, registry, options, false, ws, solution, tol);
-  checkBranches(problem, registry, tol, solution);
+  detail::checkBranches(problem, registry, tol, solution);
+  // The rules' closed forms enumerate every branch: what they answered is complete.
+  solution.complete =
+      solution.status == Status::kSolved || solution.status == Status::kInconsistent;
+  // What the rules leave goes to the numeric stage (when one is registered); nothing more runs
+  // for a problem they answered.
+  if (solution.status == Status::kUnhandled && registry.fallback())
+    detail::answerByFallback(problem, registry, options, tol, solution);
   solution.solve_us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -608,6 +631,8 @@ void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Re
   ws.pending.clear();
   ws.pending.push_back(set);
   runPending(st);
+  solution.complete =
+      solution.status == Status::kSolved || solution.status == Status::kInconsistent;
 }
 
 Solution solve(const Problem& problem, const Registry& registry, const SolverOptions& options) {

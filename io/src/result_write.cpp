@@ -264,6 +264,17 @@ void writeBranch(Writer& w, const Report& r, std::size_t b) {
   w.integerOrNull(br.rotational_dof >= 0 ? br.translational_dof : -1);
   w.key("manifold");
   w.string(br.manifold);
+  w.key("exact");
+  w.boolean(br.exact);
+  if (!br.exact) {  // found numerically: its proof (docs/spec.md §2.4, §8)
+    w.key("certified");
+    w.beginObject();
+    w.key("radius");
+    w.number(br.certified.radius);
+    w.key("angle");
+    w.number(br.certified.angle);
+    w.endObject();
+  }
   w.key("parameters");
   w.list(static_cast<std::size_t>(br.dof), [&](std::size_t i) {
     const Parameter& p = br.parameters[i];
@@ -310,6 +321,8 @@ void writeReport(const Report& r, ResultFormat format, std::string& out) {
   w.string(r.name);
   w.key("status");
   w.string(toString(r.status));
+  w.key("complete");
+  w.boolean(r.complete);
   w.key("message");
   w.string(r.message);
   w.key("branches");

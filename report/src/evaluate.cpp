@@ -29,6 +29,7 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
                       Report& r) {
   r.name = problem.name;
   r.status = solution.status;
+  r.complete = solution.complete;
   resultMessage(problem, solution, r.message);
   r.conflicts.assign(solution.conflicts.begin(), solution.conflicts.end());
   r.redundant.assign(solution.redundant.begin(), solution.redundant.end());
@@ -54,6 +55,8 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
     br.rotational_dof = m.rotationalDof();
     br.translational_dof = br.rotational_dof >= 0 ? m.translationalDof() : -1;
     br.manifold = m.describe();
+    br.exact = branch.exact;
+    br.certified = branch.certified;
     for (int i = 0; i < br.dof; ++i) br.parameters[static_cast<std::size_t>(i)] = m.parameter(i);
     br.nearest = nearestOnBranch(branch, problem.mobile.pose);
     if (br.nearest.distance < best_d) best_d = br.nearest.distance, r.best = static_cast<int>(b);

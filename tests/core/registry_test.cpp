@@ -58,5 +58,41 @@ TEST(Registry, EveryRuleCaseHasAUniqueNameAndACitation) {
   }
 }
 
+bool noAnswer(const Problem&, const Registry&, const Tolerance&, Solution&, const void*) {
+  return false;
+}
+
+// The numeric stage's hook: one per registry, frozen like the rest, stamped with its origin.
+TEST(Registry, OneFallbackStampedWithItsOrigin) {
+  Registry r;
+  EXPECT_EQ(r.fallback(), nullptr);
+  EXPECT_THROW(r.setFallback({"none", nullptr}), std::invalid_argument);
+  EXPECT_EQ(r.fallback(), nullptr);
+  static const int state = 7;
+  r.setFallback({"first", &noAnswer, &state});
+  ASSERT_NE(r.fallback(), nullptr);
+  EXPECT_EQ(r.fallback()->name, "first");
+  EXPECT_EQ(r.fallback()->context, &state);
+  EXPECT_EQ(r.fallback()->origin, "built-in");
+  EXPECT_EQ(r.fallback()->library, nullptr);
+  try {
+    r.setFallback({"second", &noAnswer});
+    ADD_FAILURE() << "a second fallback was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "fallback 'second': the numeric stage 'first' is already registered (by "
+                 "built-in)");
+  }
+  r.setOrigin("/plugins/numeric.so", /*allow_replace=*/true);
+  r.setFallback({"second", &noAnswer});
+  r.clearOrigin();
+  EXPECT_EQ(r.fallback()->name, "second");
+  EXPECT_EQ(r.fallback()->origin, "/plugins/numeric.so");
+  EXPECT_EQ(r.fallback()->library, nullptr);  // no library was kept for that path
+  r.freeze();
+  EXPECT_THROW(r.setFallback({"third", &noAnswer}, /*replace=*/true), std::logic_error);
+  EXPECT_EQ(r.fallback()->name, "second");
+}
+
 }  // namespace
 }  // namespace relpos::test

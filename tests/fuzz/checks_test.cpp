@@ -106,6 +106,32 @@ TEST(FuzzChecks, BranchesOfAResultThatIsNotSolvedAreBadOutput) {
   EXPECT_NE(std::find(k.begin(), k.end(), "bad-output"), k.end());
 }
 
+// "complete" and "exact"/"certified" (docs/spec.md §2.2, §2.4): each misuse is flagged.
+TEST(FuzzChecks, CompletenessAndCertificatesThatContradictTheResultAreBadOutput) {
+  const Written w = workedExample();
+  const auto flagged = [&](const std::string& line) {
+    const auto k = kinds(check(w, line));
+    return std::find(k.begin(), k.end(), "bad-output") != k.end();
+  };
+  EXPECT_TRUE(flagged(replaced(w.line, "\"complete\":true,", "")));
+  EXPECT_TRUE(flagged(replaced(w.line, "\"exact\":true", "\"exact\":false")));
+  EXPECT_TRUE(flagged(replaced(w.line, "\"exact\":true",
+                               "\"exact\":true,\"certified\":{\"radius\":0.0,\"angle\":0.0}")));
+  EXPECT_TRUE(flagged(replaced(w.line, "\"exact\":true",
+                               "\"exact\":false,\"certified\":{\"radius\":-1.0,\"angle\":0.0}")));
+  EXPECT_FALSE(flagged(replaced(w.line, "\"exact\":true",
+                                "\"exact\":false,\"certified\":{\"radius\":1e-12,\"angle\":0.0}")));
+  // An unhandled result that claims completeness.
+  const std::string unhandled =
+      replaced(replaced(w.line, "\"status\":\"solved\"", "\"status\":\"unhandled\""),
+               "\"message\":\"\"", "\"message\":\"why\"");
+  const std::size_t from = unhandled.find("\"branches\":[") + 12, to = unhandled.find("],\"best\"");
+  const std::string no_branches =
+      replaced(unhandled.substr(0, from) + unhandled.substr(to), "\"best\":0", "\"best\":null");
+  EXPECT_TRUE(flagged(no_branches));
+  EXPECT_FALSE(flagged(replaced(no_branches, "\"complete\":true", "\"complete\":false")));
+}
+
 TEST(FuzzChecks, DiagnosticsMustBeOneLineWithAPath) {
   ParseResult r;
   r.errors.push_back({"constraints[0]", "one\ntwo"});

@@ -62,6 +62,15 @@ class ResultReader {
     const std::string status = j.value("status", std::string("(none)"));
     if (status != "solved" && status != "inconsistent" && status != "unhandled")
       bad("/status", "'" + printable(status) + "' is not solved, inconsistent or unhandled");
+    // complete (docs/spec.md §2.2): proven that no solution is missing — never for unhandled,
+    // always for inconsistent.
+    if (!j.contains("complete") || !j["complete"].is_boolean()) {
+      bad("/complete", "missing or not a boolean");
+    } else if (status == "unhandled" && j["complete"].get<bool>()) {
+      bad("/complete", "true for an unhandled result");
+    } else if (status == "inconsistent" && !j["complete"].get<bool>()) {
+      bad("/complete", "false for an inconsistent result (it is only answered when proven)");
+    }
     if (!j.contains("message") || !j["message"].is_string()) {
       bad("/message", "missing or not a string");
     } else if (status != "solved" && j["message"].get<std::string>().empty()) {
@@ -150,6 +159,18 @@ class ResultReader {
       bad(at, "rotational_dof + translational_dof is not dof");
     }
     if (!b.contains("manifold") || !b["manifold"].is_string()) bad(at + "/manifold", "missing");
+    // exact, or certified with a finite, non-negative radius and angle (docs/spec.md §2.4).
+    if (!b.contains("exact") || !b["exact"].is_boolean()) {
+      bad(at + "/exact", "missing or not a boolean");
+    } else if (b["exact"].get<bool>() == b.contains("certified")) {
+      bad(at + "/certified", b.contains("certified") ? "present on an exact branch"
+                                                     : "missing on a branch that is not exact");
+    } else if (b.contains("certified")) {
+      const json& c = b["certified"];
+      for (const char* k : {"radius", "angle"})
+        if (!c.is_object() || !c.contains(k) || !c[k].is_number() || !(c[k].get<double>() >= 0))
+          bad(at + "/certified/" + k, "missing or not a non-negative number");
+    }
     if (!b.contains("parameters") || !b["parameters"].is_array() ||
         b["parameters"].size() != static_cast<std::size_t>(dof))
       return bad(at + "/parameters", "missing or not dof long"), none;

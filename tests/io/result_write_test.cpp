@@ -23,6 +23,7 @@
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/report/evaluate.hpp"
 #include "test_config.hpp"
+#include "test_fallback.hpp"
 
 namespace relpos::test {
 namespace {
@@ -92,6 +93,17 @@ void expectPose(const json& j, const Isometry3d& X, const Params& theta, int dof
     expectNumber(j["orientation"][static_cast<std::size_t>(i)], q[i], what + " orientation");
 }
 
+// The first n keys of an object in the order written (all of them when n is 0), each followed by
+// a space.
+std::string keysOf(const json& j, std::size_t n = 0) {
+  std::string keys;
+  for (const auto& [k, v] : j.items()) {
+    keys += k + " ";
+    if (--n == 0) break;
+  }
+  return keys;
+}
+
 // Every number of the line against the double it comes from, recomputed here: the parameter
 // bounds, the nearest pose and its distance, the samples (the same generator, drawn in the same
 // order), the solve time.
@@ -102,6 +114,23 @@ void expectLine(const Problem& p, const ReportOptions& opt) {
   const json doc = json::parse(line);  // throws on malformed JSON or UTF-8
   EXPECT_EQ(doc, documentTree(p, s, opt)) << p.name;
   EXPECT_EQ(doc["name"], p.name);
+  // "complete" right after "status", each branch's "exact" right after "manifold", and
+  // "certified" exactly when it is not exact: as the Solution says.
+  EXPECT_EQ(keysOf(doc, 5), "relpos name status complete message ") << p.name;
+  EXPECT_EQ(doc["complete"], s.complete) << p.name;
+  for (std::size_t b = 0; b < s.branches.size(); ++b) {
+    const json& jb = doc["branches"][b];
+    EXPECT_EQ(jb["exact"], s.branches[b].exact) << p.name;
+    EXPECT_EQ(jb.contains("certified"), !s.branches[b].exact) << p.name;
+    EXPECT_EQ(keysOf(jb, 5), "dof rotational_dof translational_dof manifold exact ") << p.name;
+  }
+  // The rules' answers (no numeric stage registered): complete when solved or inconsistent.
+  if (!builtinRegistry().fallback()) {
+    EXPECT_EQ(doc["complete"].get<bool>(),
+              s.status == Status::kSolved || s.status == Status::kInconsistent)
+        << p.name;
+    for (const json& jb : doc["branches"]) EXPECT_EQ(jb["exact"], true) << p.name;
+  }
   expectNumber(doc["stats"]["solve_us"], s.solve_us, p.name + " solve_us");
   ASSERT_EQ(doc["branches"].size(), s.branches.size()) << p.name;
   std::mt19937_64 rng(opt.seed);
@@ -162,6 +191,57 @@ std::string shortestScientific(double v) {
     if (sameDouble(std::strtod(buf, nullptr), v)) break;
   }
   return buf;
+}
+
+// A branch the numeric stage found (tests/support/test_fallback.hpp) is written "exact": false with
+// its certificate right after "manifold", and the result's "complete" right after "status", in
+// the line and the indented document alike: every value reads back as the Report's.
+TEST(ResultLine, ACertifiedBranchAndCompletenessRoundTripInBothLayouts) {
+  TestFallback stage;
+  stage.pose = platformPose();
+  stage.certificate = {1.0 / 3.0 * 1e-10, 2.5e-13};  // digits the two spellings write differently
+  for (bool complete : {true, false}) {
+    stage.complete = complete;
+    const Registry reg = builtinsWithFallback(stage);
+    const Problem p = platformProblem(stage.pose);
+    const Solution s = solve(p, reg);
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    const Report report = evaluate(p, s, ReportOptions());
+    ASSERT_EQ(report.branches.size(), 1u);
+    EXPECT_FALSE(report.branches[0].exact);
+    EXPECT_EQ(report.complete, complete);
+    for (ResultFormat format : {kResultLine, kCollisionLine, kResultDocument}) {
+      std::string text;
+      writeReport(report, format, text);
+      const json doc = json::parse(text);
+      EXPECT_EQ(keysOf(doc, 5), "relpos name status complete message ") << text;
+      EXPECT_EQ(doc["complete"], complete) << text;
+      const json& b = doc["branches"][0];
+      EXPECT_EQ(keysOf(b, 7),
+                "dof rotational_dof translational_dof manifold exact certified parameters ")
+          << text;
+      EXPECT_EQ(b["exact"], false) << text;
+      EXPECT_EQ(keysOf(b["certified"]), "radius angle ") << text;
+      expectNumber(b["certified"]["radius"], stage.certificate.radius, "radius");
+      expectNumber(b["certified"]["angle"], stage.certificate.angle, "angle");
+      expectPose(b["nearest"], stage.pose, Params{}, 0, "the certified pose");
+    }
+  }
+}
+
+// What the rules leave (no numeric stage registered) is written incomplete, without branches.
+TEST(ResultLine, AnUnhandledResultIsNotComplete) {
+  const Problem p = platformProblem(platformPose());
+  const Solution s = solve(p, rulesOnlyRegistry());
+  ASSERT_EQ(s.status, Status::kUnhandled);
+  for (ResultFormat format : {kResultLine, kResultDocument}) {
+    std::string text;
+    writeReport(evaluate(p, s, ReportOptions()), format, text);
+    const json doc = json::parse(text);
+    EXPECT_EQ(doc["status"], "unhandled");
+    EXPECT_EQ(doc["complete"], false);
+    EXPECT_TRUE(doc["branches"].empty());
+  }
 }
 
 TEST(ResultLine, NumbersAreTheShortestTextThatReadsBackExactly) {

@@ -13,7 +13,9 @@
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/loader.hpp"
 #include "relpos/report/evaluate.hpp"
+#include "solve_helpers.hpp"
 #include "test_config.hpp"
+#include "test_fallback.hpp"
 
 namespace relpos::test {
 namespace {
@@ -100,6 +102,25 @@ TEST(PluginGuards, AMatcherThatThrows) {
   ASSERT_NO_THROW(s = solve(onePair("explodes-in-matcher"), registryWith("matcher-throws")));
   expectUnhandled(
       s, {"matcher 'explodes' " + pluginNote("matcher-throws") + " threw: the matcher blew up"});
+}
+
+// A plugin's numeric stage (docs/spec.md §8) is stamped with the plugin, and what it throws keeps
+// the rules' `unhandled`, naming it.
+TEST(PluginGuards, ANumericStageThatThrows) {
+  const Registry r = registryWith("fallback-throws");
+  ASSERT_NE(r.fallback(), nullptr);
+  EXPECT_EQ(r.fallback()->origin, fs::canonical(badPlugin("fallback-throws")).string());
+  ASSERT_NE(r.fallback()->library, nullptr);
+  EXPECT_EQ(r.fallback()->library, r.fallback()->origin);
+  const Problem p = platformProblem(platformPose());
+  const Solution rules = solve(p, rulesOnlyRegistry());
+  ASSERT_EQ(rules.status, Status::kUnhandled);
+  Solution s;
+  ASSERT_NO_THROW(s = solve(p, r));
+  EXPECT_EQ(s.status, Status::kUnhandled);
+  EXPECT_FALSE(s.complete);
+  EXPECT_EQ(s.message, rules.message + "; the numeric stage 'explodes-in-fallback' " +
+                           pluginNote("fallback-throws") + " threw: the fallback blew up");
 }
 
 // What cannot be caught later (an overrun, a null pointer) is checked by the solver right after

@@ -25,12 +25,23 @@ void checkOne(const Problem& p, const nlohmann::json& x, const Registry& registr
   Solution s = solve(p, registry);
   if (x.contains("fires")) {
     const std::string want = x["fires"];
-    EXPECT_TRUE(
-        std::any_of(s.ruleNames().begin(), s.ruleNames().end(),
-                    [&](const char* f) { return want == f; }))
+    EXPECT_TRUE(std::any_of(s.ruleNames().begin(), s.ruleNames().end(),
+                            [&](const char* f) { return want == f; }))
         << want << " did not fire; fired: " << firedList(s);
   }
   EXPECT_EQ(toString(s.status), x["status"].get<std::string>()) << describeBranches(s);
+  // docs/spec.md §2.2: an unhandled answer is never complete, an inconsistent one always; the
+  // rules' closed forms (no numeric stage registered) enumerate every branch, each exact.
+  if (s.status == Status::kUnhandled) {
+    EXPECT_FALSE(s.complete);
+  }
+  if (s.status == Status::kInconsistent) {
+    EXPECT_TRUE(s.complete);
+  }
+  if (!registry.fallback()) {
+    EXPECT_EQ(s.complete, s.status == Status::kSolved || s.status == Status::kInconsistent);
+    for (const Branch& b : s.branches) EXPECT_TRUE(b.exact) << describeBranches(s);
+  }
   EXPECT_EQ(s.branches.size(), x["branches"].get<std::size_t>()) << describeBranches(s);
   std::vector<int> dofs, want = x["dof"].get<std::vector<int>>();
   for (const auto& b : s.branches) dofs.push_back(b.manifold->dof());

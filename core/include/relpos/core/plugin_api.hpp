@@ -38,8 +38,10 @@ namespace relpos {
 // BranchSink (MatchContext::branches replaces `out`, `defer` and `solver`); MatcherInfo records
 // its library; Solution::rules holds RuleCaseIds named by a shared RuleNames table;
 // ConstraintType declares its value kind and fields; Manifold's built-in shapes gained a kind
-// tag; the fingerprint below replaced a sum of sizes).
-inline constexpr long kPluginAbiVersion = 6;
+// tag; the fingerprint below replaced a sum of sizes; 7: issue 15 — Branch gained `exact` and
+// `certified` (a Certificate), Solution `complete`, Registry the numeric stage's hook
+// (setFallback: FallbackInfo, FallbackFn)).
+inline constexpr long kPluginAbiVersion = 7;
 
 // A fingerprint of every struct a plugin shares with relpos, member by member (offset, size,
 // alignment), and of every callback's signature: a plugin built against headers that differ in
@@ -85,12 +87,15 @@ constexpr std::uint64_t pluginLayoutFingerprint() {
       RELPOS_ABI_MEMBER(MatchContext, branches), RELPOS_ABI_MEMBER(MatchContext, conflict),
       RELPOS_ABI_MEMBER(MatchContext, reason), RELPOS_ABI_TYPE(BranchSink), RELPOS_ABI_TYPE(Branch),
       RELPOS_ABI_MEMBER(Branch, manifold), RELPOS_ABI_MEMBER(Branch, sources),
-      RELPOS_ABI_MEMBER(Branch, origin), RELPOS_ABI_TYPE(ManifoldHolder), kManifoldStorage, kMaxDof,
-      RELPOS_ABI_TYPE(Parameter), RELPOS_ABI_MEMBER(Parameter, name),
-      RELPOS_ABI_MEMBER(Parameter, kind), RELPOS_ABI_MEMBER(Parameter, min),
-      RELPOS_ABI_MEMBER(Parameter, max), RELPOS_ABI_MEMBER(Parameter, periodic),
-      RELPOS_ABI_TYPE(Solution), RELPOS_ABI_MEMBER(Solution, libraries),
-      RELPOS_ABI_MEMBER(Solution, rule_names), RELPOS_ABI_MEMBER(Solution, status),
+      RELPOS_ABI_MEMBER(Branch, origin), RELPOS_ABI_MEMBER(Branch, exact),
+      RELPOS_ABI_MEMBER(Branch, certified), RELPOS_ABI_TYPE(Certificate),
+      RELPOS_ABI_MEMBER(Certificate, radius), RELPOS_ABI_MEMBER(Certificate, angle),
+      RELPOS_ABI_TYPE(ManifoldHolder), kManifoldStorage, kMaxDof, RELPOS_ABI_TYPE(Parameter),
+      RELPOS_ABI_MEMBER(Parameter, name), RELPOS_ABI_MEMBER(Parameter, kind),
+      RELPOS_ABI_MEMBER(Parameter, min), RELPOS_ABI_MEMBER(Parameter, max),
+      RELPOS_ABI_MEMBER(Parameter, periodic), RELPOS_ABI_TYPE(Solution),
+      RELPOS_ABI_MEMBER(Solution, libraries), RELPOS_ABI_MEMBER(Solution, rule_names),
+      RELPOS_ABI_MEMBER(Solution, status), RELPOS_ABI_MEMBER(Solution, complete),
       RELPOS_ABI_MEMBER(Solution, message), RELPOS_ABI_MEMBER(Solution, branches),
       RELPOS_ABI_MEMBER(Solution, conflicts), RELPOS_ABI_MEMBER(Solution, redundant),
       RELPOS_ABI_MEMBER(Solution, rules), RELPOS_ABI_MEMBER(Solution, solve_us),
@@ -118,11 +123,15 @@ constexpr std::uint64_t pluginLayoutFingerprint() {
       RELPOS_ABI_MEMBER(MatcherInfo, library), RELPOS_ABI_TYPE(CustomKindInfo),
       RELPOS_ABI_MEMBER(CustomKindInfo, name), RELPOS_ABI_MEMBER(CustomKindInfo, description),
       RELPOS_ABI_MEMBER(CustomKindInfo, residual), RELPOS_ABI_MEMBER(CustomKindInfo, context),
-      RELPOS_ABI_MEMBER(CustomKindInfo, origin), RELPOS_ABI_TYPE(Registry),
+      RELPOS_ABI_MEMBER(CustomKindInfo, origin), RELPOS_ABI_TYPE(FallbackInfo),
+      RELPOS_ABI_MEMBER(FallbackInfo, name), RELPOS_ABI_MEMBER(FallbackInfo, fn),
+      RELPOS_ABI_MEMBER(FallbackInfo, context), RELPOS_ABI_MEMBER(FallbackInfo, origin),
+      RELPOS_ABI_MEMBER(FallbackInfo, library), RELPOS_ABI_TYPE(Registry),
       // the callbacks
       abi::Signature<DecomposeFn>::value, abi::Signature<CheckFn>::value,
       abi::Signature<ViolationFn>::value, abi::Signature<RuleFn>::value,
-      abi::Signature<MatchFn>::value, abi::Signature<ResidualFn>::value);
+      abi::Signature<MatchFn>::value, abi::Signature<ResidualFn>::value,
+      abi::Signature<FallbackFn>::value);
 #pragma GCC diagnostic pop
 }
 

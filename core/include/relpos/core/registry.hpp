@@ -16,6 +16,8 @@
 namespace relpos {
 
 class BranchSink;
+struct Solution;
+class Registry;
 
 // " (built-in)" or " (plugin PATH)": where an item comes from, for a message about it.
 std::string originNote(const std::string& origin);
@@ -157,6 +159,30 @@ struct CustomKindInfo {
   std::string origin = "built-in";
 };
 
+// --- the numeric stage (docs/spec.md §8) -------------------------------------------------------
+// Answers a problem the rules left `unhandled` (library relpos_complete registers one; a plugin
+// may register its own). Called by solve() after the rules and the last check (§6.5), only when
+// the answer is kUnhandled, with `solution` holding that answer (its message the rules' reason,
+// no branches, the rules that fired) and `tol` the problem's tolerance. Returns true when it
+// answered: status kSolved with branches — each exact (a closed form) or certified
+// (Branch::exact false, Branch::certified its proof) — and `complete` from its proof, or
+// kInconsistent only when proven (conflicts and message saying which and why). Returns false
+// when it could not: the rules' answer stands (a message it set is added to theirs). Its answer
+// goes through the same last check as the rules'. (To run the rules on a part of the problem it
+// may call solveConstraintSet, which never calls the fallback; solve() with this registry would
+// call it again.)
+using FallbackFn = bool (*)(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                            Solution& solution, const void* context);
+struct FallbackInfo {
+  std::string name;  // e.g. "complete"
+  FallbackFn fn = nullptr;
+  const void* context = nullptr;  // handed to every call of fn
+  std::string origin = "built-in";
+  // Set by the registry, as MatcherInfo::library: what the fallback's branches record as
+  // Branch::origin; nullptr for a built-in one.
+  const char* library = nullptr;
+};
+
 class Registry {
  public:
   // Each add throws std::invalid_argument on a duplicate name (unless replace is true) or once
@@ -168,6 +194,10 @@ class Registry {
   // Registers a fundamental kind of its own for a plugin; returns the index to store in
   // Fundamental::custom (the same index when the name is already registered by this origin).
   std::uint16_t addCustomKind(CustomKindInfo k);
+  // Registers the numeric stage (one per registry): throws std::invalid_argument when one is
+  // already registered (unless replace, or the origin allows replacing) or fn is null, and
+  // std::logic_error once frozen.
+  void setFallback(FallbackInfo f, bool replace = false);
   void freeze() { frozen_ = true; }
 
   // Keeps `state` (a plugin's, for its callbacks' context) as long as this registry and its
@@ -206,6 +236,8 @@ class Registry {
   const std::vector<MatcherInfo>& matchers() const { return matchers_; }
   const std::vector<CustomKindInfo>& customKinds() const { return custom_kinds_; }
   const CustomKindInfo* customKind(const std::string& name) const;
+  // The numeric stage, or nullptr when none is registered.
+  const FallbackInfo* fallback() const { return fallback_.fn ? &fallback_ : nullptr; }
 
   // Rules for an ordered pair of kinds: indices into rules(), with `swapped` telling whether the
   // rule wants the pair in the opposite order. Built once per registration, never scanned.
@@ -230,6 +262,7 @@ class Registry {
   std::vector<ManifoldInfo> manifolds_;
   std::vector<MatcherInfo> matchers_;
   std::vector<CustomKindInfo> custom_kinds_;
+  FallbackInfo fallback_;  // fn == nullptr: none
   std::shared_ptr<const RuleNames> rule_names_;
   std::string origin_;                    // empty: built-in
   const char* origin_library_ = nullptr;  // libraryPath(origin_)

@@ -15,6 +15,16 @@ namespace relpos {
 enum class Status : unsigned char { kNotSolved, kSolved, kInconsistent, kUnhandled };
 const char* toString(Status s);
 
+// What proves a branch the numeric stage found (docs/spec.md §2.4, §8): a Krawczyk-proven box
+// about the reported pose holding exactly one solution of the encoded system, so the reported
+// pose is within `radius` (the box's half-width over the position, in the problem's length
+// units) and `angle` (its bound on the rotation, radians) of a true solution. Both 0 for an exact
+// branch, both finite and non-negative always.
+struct Certificate {
+  double radius = 0.0;
+  double angle = 0.0;
+};
+
 struct Branch {
   ManifoldHolder manifold;
   SourceMask sources = 0;  // input constraints that shaped this branch
@@ -22,6 +32,10 @@ struct Branch {
   // Solution::libraries), so that an exception its manifold throws later names it; nullptr for
   // a built-in matcher's branch.
   const char* origin = nullptr;
+  // true: a closed form (a rule's or a matcher's manifold), every pose of it a solution to the
+  // rounding of its arithmetic. false: found numerically and proven by `certified`.
+  bool exact = true;
+  Certificate certified;  // zero unless !exact
 };
 
 struct Solution {
@@ -32,6 +46,12 @@ struct Solution {
   // The names of the registry's rule cases (Registry::ruleNames), which `rules` indexes.
   std::shared_ptr<const RuleNames> rule_names;
   Status status = Status::kNotSolved;
+  // Proven that no solution is missing: the branches (none, when inconsistent) are every pose
+  // that satisfies the constraints. The solver sets it for an answer of the rules (their closed
+  // forms enumerate every branch): true when solved or inconsistent, false when unhandled; the
+  // numeric stage (Registry::fallback) sets it from its proof (docs/spec.md §2.2, §8). An
+  // inconsistent answer is always complete; an unhandled one never is.
+  bool complete = false;
   std::string message = "relpos::solve was not called.";
   std::vector<Branch> branches;
   std::vector<int> conflicts;     // input constraint indices (inconsistent)

@@ -42,7 +42,9 @@ struct BranchReport {
   int dof = 0;
   int rotational_dof = -1;  // -1 for a mixed manifold (written as null), with translational_dof
   int translational_dof = -1;
-  std::string manifold;  // Manifold::describe()
+  std::string manifold;   // Manifold::describe()
+  bool exact = true;      // Branch::exact: a closed form; false: found numerically, `certified`
+  Certificate certified;  // Branch::certified (zero for an exact branch)
   std::array<Parameter, kMaxDof> parameters{};
   NearestPose nearest;           // the branch's pose nearest the initial pose
   std::size_t first_sample = 0;  // its samples: Report::samples[first_sample, + sample_count)
@@ -52,7 +54,8 @@ struct BranchReport {
 struct Report {
   std::string name;
   Status status = Status::kNotSolved;
-  std::string message;  // the solution's, with the user's constraint ids next to the conflicts
+  bool complete = false;  // Solution::complete: proven that no solution is missing
+  std::string message;    // the solution's, with the user's constraint ids next to the conflicts
   std::vector<BranchReport> branches;
   std::vector<SamplePose> samples;  // every branch's, in branch order (BranchReport::first_sample)
   int best = -1;                    // the branch whose nearest pose is nearest; -1: none
