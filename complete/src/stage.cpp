@@ -140,16 +140,25 @@ bool solvePose(const Problem& problem, const Registry& registry, const Tolerance
 }
 
 // The branch of every pose that puts the mobile line on the world line (point, direction): the
-// rules' own coincident line-line (a spin about it and a slide along it).
-bool lineBranch(const Registry& registry, const Problem& problem, const LineEncoding& enc,
+// rules' own coincident line-line (a spin about it and a slide along it), run on its constraint
+// set (solveConstraintSet never calls the numeric stage again, as solve() would).
+bool lineBranch(const Registry& registry, const Tolerance& tol, const LineEncoding& enc,
                 const LineEnclosure& line, Branch* out) {
-  Problem aux;
-  aux.name = problem.name;
-  aux.mobile.pose = problem.mobile.pose;
-  aux.addFixedFeature("line", Feature::makeLine(line.point, line.direction));
-  aux.addMobileFeature("line", Feature::makeLine(enc.mobile_point, enc.mobile_direction));
-  aux.addConstraint("coincident", "line", "line");
-  Solution s = solve(aux, registry);
+  const ConstraintType* type = registry.constraintType("coincident");
+  if (!type || !type->decompose) return false;
+  InputConstraint c;
+  c.type = "coincident";
+  c.fixed = Feature::makeLine(line.point, line.direction);
+  c.mobile = Feature::makeLine(enc.mobile_point, enc.mobile_direction);
+  c.has_value = true;
+  Decomposition d;
+  type->decompose(c, c.fixed, 1, d, type->context);
+  if (d.unhandled || d.alternatives.size() != 1) return false;
+  ConstraintSet set;
+  for (const Fundamental& f : d.alternatives[0]) set.add(f);
+  Workspace ws;
+  Solution s;
+  solveConstraintSet(set, tol, registry, SolverOptions(), ws, s);
   if (s.status != Status::kSolved || s.branches.size() != 1) return false;
   *out = s.branches[0];
   return true;
@@ -178,7 +187,7 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
       if (s.sign * along < 0.0) return;
     }
     Branch b;
-    if (!lineBranch(registry, problem, enc, le, &b))
+    if (!lineBranch(registry, tol, enc, le, &b))
       return doubt(a, "the rules did not solve the line's coincidence");
     const Manifold& m = *b.manifold;
     const double v = worstViolation(problem, registry, tol, m.pose(referenceParams(m)));
@@ -197,7 +206,19 @@ bool decline(Solution& solution, const std::string& why) {
   return false;
 }
 
+bool stageFallback(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                   Solution& solution, const void* /*context*/) {
+  return solveComplete(problem, registry, tol, solution);
+}
+
 }  // namespace
+
+void registerCompleteStage(Registry& registry) {
+  FallbackInfo f;
+  f.name = "complete";
+  f.fn = &stageFallback;
+  registry.setFallback(std::move(f));
+}
 
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report) {
@@ -222,6 +243,7 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
       return decline(solution, "no solution among the roots found, and not proven: " + a.doubt);
     solution.branches.clear();
     solution.status = Status::kInconsistent;
+    solution.complete = true;
     solution.conflicts.clear();
     for (std::size_t i = 0; i < problem.constraints.size(); ++i)
       solution.conflicts.push_back(static_cast<int>(i));
@@ -231,6 +253,12 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
     return true;
   }
   solution.branches = std::move(a.branches);
+  for (std::size_t i = 0; i < solution.branches.size(); ++i) {
+    solution.branches[i].exact = false;
+    solution.branches[i].certified = {a.certificates[i].radius, a.certificates[i].angle};
+    solution.branches[i].origin = nullptr;
+  }
+  solution.complete = a.proven;
   rep.certificates = std::move(a.certificates);
   solution.status = Status::kSolved;
   solution.conflicts.clear();

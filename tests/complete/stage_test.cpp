@@ -8,6 +8,7 @@
 
 #include "known_problems.hpp"
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/core/solver.hpp"
 
 namespace relpos::complete {
 namespace {
@@ -29,12 +30,29 @@ double nearestBranch(const Solution& s, const Isometry3d& X) {
 
 void expectCertificates(const Solution& s, const StageReport& r) {
   ASSERT_EQ(r.certificates.size(), s.branches.size());
-  for (const auto& c : r.certificates) {
+  EXPECT_EQ(s.complete, r.complete);
+  for (std::size_t i = 0; i < s.branches.size(); ++i) {
+    const auto& c = r.certificates[i];
     EXPECT_GE(c.radius, 0.0);
     EXPECT_GE(c.angle, 0.0);
     EXPECT_LT(c.radius, 1e-6);
     EXPECT_LT(c.angle, 1e-6);
+    EXPECT_FALSE(s.branches[i].exact);
+    EXPECT_EQ(s.branches[i].certified.radius, c.radius);
+    EXPECT_EQ(s.branches[i].certified.angle, c.angle);
   }
+}
+
+// The built-ins with this stage as their numeric stage.
+const Registry& registryWithStage() {
+  static const Registry r = [] {
+    Registry reg;
+    registerBuiltins(reg);
+    if (!reg.fallback()) registerCompleteStage(reg);
+    reg.freeze();
+    return reg;
+  }();
+  return r;
 }
 
 TEST(Stage, SixSixPlatformHasItsFortyRootsAndTheTruePose) {
@@ -175,6 +193,28 @@ TEST(Stage, AScaledAndMovedCopyGivesTheSamePosesMapped) {
     const Isometry3d Y = test::movedPose(br.manifold->pose({}), scale, dW, dM);
     EXPECT_LT(nearestBranch(b, Y), 1e-7 * scale);
   }
+}
+
+// Through solve(): the rules leave the platform unhandled, the stage answers, the solver's last
+// check passes every branch.
+TEST(Stage, SolveHandsTheRulesLeftoversToTheStage) {
+  std::mt19937_64 rng(39);
+  const Isometry3d X = randomPose(rng);
+  const Problem p = test::sixSix(rng, X);
+  const Solution s = solve(p, registryWithStage());
+  ASSERT_EQ(s.status, Status::kSolved) << s.message;
+  EXPECT_TRUE(s.complete);
+  EXPECT_LT(nearestBranch(s, X), 1e-8);
+  for (const Branch& b : s.branches) {
+    EXPECT_FALSE(b.exact);
+    EXPECT_LT(b.certified.radius, 1e-6);
+  }
+  // A problem the stage does not take stays the rules' answer, its reason added.
+  Problem q = p;
+  q.constraints.pop_back();
+  const Solution u = solve(q, registryWithStage());
+  EXPECT_EQ(u.status, Status::kUnhandled);
+  EXPECT_NE(u.message.find("5 equations"), std::string::npos) << u.message;
 }
 
 TEST(Stage, DeclinesWithAReason) {

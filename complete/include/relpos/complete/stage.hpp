@@ -12,7 +12,8 @@
 
 namespace relpos::complete {
 
-// What proves each branch and the list (mirrors Branch::certified and Solution::complete).
+// What proves each branch and the list (Branch::certified and Solution::complete hold the same;
+// this adds the counts behind them).
 struct StageReport {
   struct Certificate {
     double radius = 0.0;  // position, problem units
@@ -32,7 +33,13 @@ struct StageReport {
 // 2-DOF spin and slide), or inconsistent when all roots were found and none is a solution
 // (complete), and true. Otherwise false, with the reason in solution.message and nothing else
 // of the solution changed.
+// Each branch is exact = false with its certificate (Branch::certified); solution.complete is the
+// proof's verdict (true when inconsistent).
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report = nullptr);
+
+// Registers solveComplete as the registry's numeric stage (Registry::setFallback, named
+// "complete"): solve() then hands it what the rules leave unhandled.
+void registerCompleteStage(Registry& registry);
 
 }  // namespace relpos::complete
