@@ -15,6 +15,7 @@ namespace relpos::complete {
 namespace {
 
 using test::evaluateMember;
+using test::maxAbs;
 using test::randomPose;
 using test::randomVector;
 using test::realMember;
@@ -69,12 +70,6 @@ RealMember memberOf(const Isometry3d& X, std::mt19937_64& rng) {
 }
 
 std::vector<Complex> asComplex(const Vector8d& x) { return {x.data(), x.data() + 8}; }
-
-double maxAbs(const std::vector<Complex>& v) {
-  double m = 0.0;
-  for (const Complex& z : v) m = std::max(m, std::abs(z));
-  return m;
-}
 
 TEST(PoseFamily, EveryEquationVanishesAtTheTruePoseAndNotNearIt) {
   std::mt19937_64 rng(11);

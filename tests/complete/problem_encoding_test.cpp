@@ -13,15 +13,10 @@ namespace relpos::complete {
 namespace {
 
 using test::evaluateMember;
+using test::maxAbs;
 using test::randomPose;
 using test::randomVector;
 using test::realMember;
-
-double maxAbs(const std::vector<Complex>& v) {
-  double m = 0.0;
-  for (const Complex& z : v) m = std::max(m, std::abs(z));
-  return m;
-}
 
 // The member of p's encoding at the Study parameters of X (in the encoding's frames): of the
 // subproblem (an orientation for each 'either' that changes the equations) where it is least.
