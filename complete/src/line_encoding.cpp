@@ -110,6 +110,17 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     } else if (c.type == "perpendicular" && !cylinder) {
       if (f == FK::kLine) push(L::kDirection, dir(F.direction), 0.0), ok = true;
       if (f == FK::kPlane) parallel(F.direction, c.orientation), ok = true;
+    } else if (c.type == "tangent" && cylinder) {
+      const double r = n.mobile.radius;
+      if (f == FK::kPlane && c.orientation != Orientation::kEither) {
+        // The axis in the plane's direction at signed distance −r (aligned) or +r (opposed).
+        const double d = c.orientation == Orientation::kAligned ? -r : r;
+        push(L::kDirection, dir(F.direction), 0.0);
+        push(L::kPlaneOffset, dir(F.direction), d + F.direction.dot(F.point)), ok = true;
+      } else if (f == FK::kCylinder) {  // axes parallel either way, r₁ + r₂ apart
+        parallel(F.direction, Orientation::kEither);
+        push(L::kPointDistance, point(F.point), (F.radius + r) * (F.radius + r)), ok = true;
+      }
     }
     if (!ok) {
       *why = at + "'" + c.type + "' " + toString(f) + "-" + toString(c.mobile.kind) +

@@ -176,5 +176,37 @@ TEST(LineEncoding, FourSpheres) {
   }
 }
 
+// A cylinder lying in the corner of two planes (tangent to both): its axis, either way along
+// the corner, is a root of the line encoding.
+TEST(LineEncoding, CylinderInACorner) {
+  std::mt19937_64 rng(27);
+  Problem p;
+  const Vector3d n1 = randomVector(rng).normalized();
+  const Vector3d n2 = (n1.cross(randomVector(rng)) + 0.3 * n1).normalized();
+  const Vector3d w = n1.cross(n2).normalized();
+  const double r = 0.4;
+  // The axis: r behind each plane (each normal pointing away from it: aligned).
+  const Vector3d corner = randomVector(rng);
+  p.addFixedFeature("P1", Feature::makePlane(corner, n1));
+  p.addFixedFeature("P2", Feature::makePlane(corner, n2));
+  p.addMobileFeature("C", Feature::makeCylinder(Vector3d(0, 0, 0.5), Vector3d::UnitX(), r));
+  p.addConstraint("tangent", "P1", "C", 0.0, Orientation::kAligned);
+  p.addConstraint("tangent", "P2", "C", 0.0, Orientation::kAligned);
+  // A point on the axis: x·n1 = corner·n1 − r, x·n2 = corner·n2 − r.
+  Eigen::Matrix3d A;
+  A.row(0) = n1, A.row(1) = n2, A.row(2) = w;
+  const Vector3d x = A.inverse() * Vector3d(corner.dot(n1) - r, corner.dot(n2) - r, 0.0);
+  LineEncoding enc;
+  std::string why;
+  ASSERT_TRUE(encodeLine(p, Tolerance::forScale(2.0), &enc, &why)) << why;
+  const LineFamily f(enc.equations, static_cast<int>(enc.target.size()));
+  Vector3d qs = enc.frames.fixedPoint(x);
+  qs -= qs.dot(w) * w;
+  for (const Vector3d& dir : {w, Vector3d(-w)}) {
+    const std::vector<Complex> y = {dir.x(), dir.y(), dir.z(), qs.x(), qs.y(), qs.z()};
+    EXPECT_LT(maxAbs(evaluateMember(f, realMember(enc.target), y)), 1e-13);
+  }
+}
+
 }  // namespace
 }  // namespace relpos::complete

@@ -159,6 +159,32 @@ TEST(Stage, ALineAtTwoAnglesAndTwoDistances) {
   EXPECT_TRUE(found);
 }
 
+// A cylinder tangent to two planes: its axis along their corner, both ways (two roots), each a
+// spin and slide.
+TEST(Stage, CylinderInACorner) {
+  Problem p;
+  p.addFixedFeature("floor", Feature::makePlane(Vector3d::Zero(), Vector3d(0, 0, -1)));
+  p.addFixedFeature("wall", Feature::makePlane(Vector3d::Zero(), Vector3d(0, -1, 0)));
+  p.addMobileFeature("C", Feature::makeCylinder(Vector3d(0, 0, 0.5), Vector3d::UnitZ(), 0.25));
+  p.addConstraint("tangent", "floor", "C", 0.0, Orientation::kAligned);
+  p.addConstraint("tangent", "wall", "C", 0.0, Orientation::kAligned);
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(r.root_count, 2);
+  EXPECT_TRUE(r.complete);
+  ASSERT_EQ(s.branches.size(), 2u);
+  for (const Branch& b : s.branches) {
+    EXPECT_EQ(b.manifold->dof(), 2);
+    const Isometry3d Y = b.manifold->pose(referenceParams(*b.manifold));
+    // The axis along x, 0.25 above the floor and 0.25 off the wall.
+    EXPECT_LT((Y.linear() * Vector3d::UnitZ()).cross(Vector3d::UnitX()).norm(), 1e-9);
+    const Vector3d on = Y * Vector3d(0, 0, 0.5);
+    EXPECT_NEAR(on.z(), 0.25, 1e-9);
+    EXPECT_NEAR(on.y(), 0.25, 1e-9);
+  }
+}
+
 TEST(Stage, NoPoseIsProvenInconsistent) {
   std::mt19937_64 rng(35);
   Problem p;
