@@ -129,6 +129,13 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     }
   }
   const int n = static_cast<int>(out->equations.size()) - 2;
+  int directional = 0;  // equations on the direction alone
+  for (const LineEquation& q : out->equations) directional += q.kind == L::kDirection;
+  if (n == 4 && directional > 2) {
+    *why = std::to_string(directional) +
+           " equations on the line's direction alone (2 unknowns): not isolated lines";
+    return false;
+  }
   if (n != 4) {
     *why = "the constraints give " + std::to_string(n) +
            " equations on the line (4 unknowns): not isolated lines";
