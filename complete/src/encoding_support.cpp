@@ -74,6 +74,8 @@ void normalsAcross(const Vector3d& u, Vector3d* n1, Vector3d* n2) {
   *n2 = u.cross(*n1).normalized();
 }
 
+bool angleAt(double v, double at) { return std::abs(v - at) <= kAngleRangeSlack; }
+
 bool isEncodedType(const std::string& type) {
   return type == "distance" || type == "angle" || type == "coincident" || type == "parallel" ||
          type == "perpendicular" || type == "tangent";

@@ -96,10 +96,10 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     } else if (c.type == "angle" && !cylinder) {
       const bool same = f == FK::kLine;
       const double kappa = same ? std::cos(value) : std::sin(value);
-      if (same && (value == 0.0 || value == kPi)) {
-        parallel(F.direction, value == 0.0 ? Orientation::kAligned : Orientation::kOpposed),
-            ok = true;
-      } else if (!same && std::abs(value) == kPi / 2) {
+      const bool zero = detail::angleAt(value, 0.0);
+      if (same && (zero || detail::angleAt(value, kPi))) {
+        parallel(F.direction, zero ? Orientation::kAligned : Orientation::kOpposed), ok = true;
+      } else if (!same && detail::angleAt(std::abs(value), kPi / 2)) {
         parallel(F.direction, value > 0 ? Orientation::kAligned : Orientation::kOpposed), ok = true;
       } else {
         push(L::kDirection, dir(F.direction), s * kappa), ok = true;

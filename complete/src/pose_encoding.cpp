@@ -160,14 +160,14 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
     if (f == FK::kPlane && m == FK::kPlane) return planeOnPlane(F, M, c.orientation, v);
   } else if (c.type == "angle") {
     if (same) {  // arccos(u·R m) = v; 0 and π are parallelisms (u·R m = ±1 is a double root)
-      if (v == 0.0 || v == kPi)
+      if (detail::angleAt(v, 0.0) || detail::angleAt(v, kPi))
         return parallel(F.direction, M.direction,
-                        v == 0.0 ? Orientation::kAligned : Orientation::kOpposed),
+                        detail::angleAt(v, 0.0) ? Orientation::kAligned : Orientation::kOpposed),
                true;
       return direction(F.direction, M.direction, std::cos(v)), true;
     }
     // line-plane: arcsin(d·n) = v, either role
-    if (std::abs(v) == kPi / 2)
+    if (detail::angleAt(std::abs(v), kPi / 2))
       return parallel(F.direction, M.direction,
                       v > 0 ? Orientation::kAligned : Orientation::kOpposed),
              true;

@@ -87,6 +87,25 @@ TEST(PoseEncoding, EitherThatChangesTheEquationsMakesSubproblems) {
   }
 }
 
+// An angle of 0 or π (to the rounding of a value converted from degrees) is a parallelism: two
+// equations and the orientation checked on the roots, not u·R m = ±1, a double root.
+TEST(PoseEncoding, ExtremeAnglesAreParallelisms) {
+  std::mt19937_64 rng(28);
+  Problem p = test::sixSix(rng, randomPose(rng));
+  p.constraints.resize(4);
+  p.addFixedFeature("L", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitX()));
+  p.addMobileFeature("m", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitY()));
+  p.addConstraint("angle", "L", "m", 180.0 * (kPi / 180.0) + 4e-16);
+  PoseEncoding enc;
+  std::string why;
+  ASSERT_TRUE(encodePose(p, 0, &enc, &why)) << why;
+  ASSERT_EQ(enc.signs.size(), 1u);
+  EXPECT_EQ(enc.signs[0].sign, -1.0);
+  EXPECT_EQ(enc.equations[6].kind, PoseEquationKind::kDirection);
+  EXPECT_EQ(enc.equations[7].kind, PoseEquationKind::kDirection);
+  EXPECT_EQ(enc.target[enc.equations[7].value], 0.0);
+}
+
 TEST(PoseEncoding, SharedFeaturesMakeTheirOwnFamily) {
   std::mt19937_64 rng(22);
   const Isometry3d X = randomPose(rng);
