@@ -243,6 +243,20 @@ TEST(Stage, SolveHandsTheRulesLeftoversToTheStage) {
   EXPECT_NE(u.message.find("5 equations"), std::string::npos) << u.message;
 }
 
+// The same problem twice: the same branches, to the bit (fixed seeds, no clock).
+TEST(Stage, Deterministic) {
+  std::mt19937_64 rng(40);
+  const Problem p = test::octahedral(rng, randomPose(rng));
+  Solution a, b;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), a));
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), b));
+  ASSERT_EQ(a.branches.size(), b.branches.size());
+  for (std::size_t i = 0; i < a.branches.size(); ++i) {
+    EXPECT_EQ(a.branches[i].manifold->pose({}).matrix(), b.branches[i].manifold->pose({}).matrix());
+    EXPECT_EQ(a.branches[i].certified.radius, b.branches[i].certified.radius);
+  }
+}
+
 TEST(Stage, DeclinesWithAReason) {
   std::mt19937_64 rng(37);
   Problem p = test::sixSix(rng, randomPose(rng));
