@@ -243,6 +243,27 @@ TEST(Stage, SolveHandsTheRulesLeftoversToTheStage) {
   EXPECT_NE(u.message.find("5 equations"), std::string::npos) << u.message;
 }
 
+// Random problems of 3 to 6 constraints measured at a random pose, which the rules leave
+// unhandled: the stage, through solve(), never answers inconsistent (the pose exists), and when
+// it answers the pose is among its branches (and must be when it says complete).
+TEST(Stage, RandomProblemsTheRulesLeave) {
+  std::mt19937_64 rng(41);
+  int answered = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const Isometry3d X = randomPose(rng);
+    Problem p;
+    const int k = 3 + static_cast<int>(rng() % 4);
+    for (int i = 0; i < k; ++i) test::addRandomConstraint(p, rng, X, i);
+    if (solve(p, builtinRegistry()).status != Status::kUnhandled) continue;
+    const Solution s = solve(p, registryWithStage());
+    if (s.status == Status::kUnhandled) continue;
+    ++answered;
+    ASSERT_EQ(s.status, Status::kSolved) << "trial " << trial << ": " << s.message;
+    if (s.complete) EXPECT_LT(nearestBranch(s, X), 1e-7) << "trial " << trial;
+  }
+  EXPECT_GT(answered, 0);
+}
+
 // The same problem twice: the same branches, to the bit (fixed seeds, no clock).
 TEST(Stage, Deterministic) {
   std::mt19937_64 rng(40);
