@@ -8,12 +8,13 @@ set_target_properties(relpos_io PROPERTIES EXPORT_NAME io)
 set_target_properties(relpos_rules PROPERTIES EXPORT_NAME rules)
 set_target_properties(relpos_builtins PROPERTIES EXPORT_NAME builtins)
 set_target_properties(relpos_manifolds PROPERTIES EXPORT_NAME manifolds)
+set_target_properties(relpos_complete PROPERTIES EXPORT_NAME complete)
 set_target_properties(relpos_plugin_sdk PROPERTIES EXPORT_NAME plugin)
 set_target_properties(relpos_plugin_loader PROPERTIES EXPORT_NAME plugin_loader)
 set_target_properties(relpos_conformance PROPERTIES EXPORT_NAME conformance)
 set_target_properties(relpos PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 
-install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_builtins
+install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_complete relpos_builtins
                 relpos_plugin_sdk relpos_plugin_loader relpos_conformance
         EXPORT relpos-targets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -22,7 +23,7 @@ install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_built
 install(TARGETS relpos RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS relpos_plugin_symmetric relpos_plugin_helical
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/relpos/plugins)
-foreach(folder core io rules manifolds builtins plugins)
+foreach(folder core io rules manifolds complete builtins plugins)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/relpos
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

@@ -1,5 +1,6 @@
 #include "relpos/builtins/builtins.hpp"
 
+#include "relpos/complete/register.hpp"
 #include "relpos/manifolds/builtin.hpp"
 #include "relpos/rules/builtin.hpp"
 
@@ -10,6 +11,7 @@ void registerBuiltins(Registry& r) {
   rules::registerBuiltinRules(r);
   manifolds::registerBuiltinManifolds(r);
   manifolds::registerMixedManifolds(r);
+  complete::registerStage(r);
 }
 
 const Registry& builtinRegistry() {

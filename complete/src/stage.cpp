@@ -206,19 +206,7 @@ bool decline(Solution& solution, const std::string& why) {
   return false;
 }
 
-bool stageFallback(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                   Solution& solution, const void* /*context*/) {
-  return solveComplete(problem, registry, tol, solution);
-}
-
 }  // namespace
-
-void registerCompleteStage(Registry& registry) {
-  FallbackInfo f;
-  f.name = "complete";
-  f.fn = &stageFallback;
-  registry.setFallback(std::move(f));
-}
 
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report) {

@@ -151,6 +151,37 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
   return 1e9;  // unknown to this evaluator: never "satisfied"
 }
 
+bool signedResidual(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM,
+                    double* residual) {
+  if (!c.has_value) return false;
+  const W F = place(c.fixed, X_WF), M = place(c.mobile, X_WM);
+  const W& P = M.kind == K::kPoint ? M : F;
+  const W& X = M.kind == K::kPoint ? F : M;
+  const bool has_point = F.kind == K::kPoint || M.kind == K::kPoint;
+  if (c.type == "distance" && has_point) {
+    if (X.kind == K::kPoint)
+      *residual = (P.a - X.a).norm() - c.value;
+    else if (X.kind == K::kLine)
+      *residual = pointLine(P.a, X) - c.value;
+    else if (X.kind == K::kPlane)
+      *residual = pointPlane(P.a, X) - c.value;
+    else
+      return false;
+    return true;
+  }
+  if (c.type == "angle" && !has_point && F.kind != K::kCylinder && M.kind != K::kCylinder) {
+    if (F.kind != M.kind) {
+      const W& L = F.kind == K::kLine ? F : M;
+      const W& Pl = F.kind == K::kPlane ? F : M;
+      *residual = elevation(L.d, Pl.d) - c.value;
+    } else {
+      *residual = angleOf(F.d, M.d) - c.value;
+    }
+    return true;
+  }
+  return false;
+}
+
 double worstViolation(const Problem& p, const Isometry3d& X_WM, int* which) {
   double worst = 0.0;
   for (std::size_t i = 0; i < p.constraints.size(); ++i) {

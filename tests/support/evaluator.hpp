@@ -15,4 +15,12 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
 // The largest violation over every constraint of the problem, and which constraint it was.
 double worstViolation(const Problem& p, const Isometry3d& X_WM, int* which = nullptr);
 
+// The same reading as a signed, smooth residual (measured minus value) for the exact scalar
+// constraints a 0-DOF benchmark is made of: distance point-point, point-line (either role),
+// point-plane (either role), an angle between lines and/or planes (false for any other kind).
+// |*residual| == violation() wherever it returns true. For
+// the random-start Newton of tests/support/reference_roots, which needs a sign to step on.
+bool signedResidual(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM,
+                    double* residual);
+
 }  // namespace relpos::test

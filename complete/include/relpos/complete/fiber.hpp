@@ -5,10 +5,10 @@
 // count of distinct certified roots equal to the family's root count proves the list complete.
 // Deterministic: the same family, target and options give the same roots in the same order, on
 // every run and thread count.
-#include <cstdint>
-#include <vector>
-
 #include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "relpos/complete/family.hpp"
 
@@ -16,8 +16,18 @@ namespace relpos::complete {
 
 // The roots of a generic complex member (the start of every homotopy in its family).
 struct StartSystem {
-  std::vector<Complex> params;         // parameterCount()
+  std::vector<Complex> params;          // parameterCount()
   std::vector<Eigen::VectorXcd> roots;  // all of its isolated roots (the family's root count)
+  // How the count was checked (added for issue 15's engine): "monodromy+total-degree" (the
+  // Bézout homotopy's roots added: total_degree_added of them were new to monodromy) or, when
+  // the Bézout number is above 4096, "monodromy+second-monodromy" (a monodromy run from an
+  // independent member, its roots carried over and added). Neither is a proof (no trace test).
+  std::string check;
+  int monodromy_loops = 0;
+  int total_degree_paths = 0;  // 0: the Bézout number was above the limit, not run
+  int total_degree_added = 0;
+  int second_monodromy_roots = 0;  // the second run's own count, when it ran
+  int second_monodromy_added = 0;
 };
 
 // The start system of f's signature: computed on first use (monodromy from f.seedMember, seeded
@@ -33,6 +43,9 @@ struct CertifiedRoot {
 struct FiberOptions {
   std::uint64_t seed = 1;  // of the random γ of each tracking attempt
   int attempts = 3;        // tracking attempts (a new γ each) before giving up on a missing root
+  // Threads tracking the paths of one call (added for issue 15's engine): 1 runs in the caller's
+  // thread; the answer is the same for every value.
+  int threads = 1;
 };
 
 struct FiberResult {

@@ -38,8 +38,4 @@ struct StageReport {
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report = nullptr);
 
-// Registers solveComplete as the registry's numeric stage (Registry::setFallback, named
-// "complete"): solve() then hands it what the rules leave unhandled.
-void registerCompleteStage(Registry& registry);
-
 }  // namespace relpos::complete

@@ -1,0 +1,105 @@
+// solveFiber: every start root tracked to the real target along a γ arc, every finite endpoint
+// polished on the target's own coefficients and certified by Krawczyk against interval
+// enclosures of those coefficients; a certified box that meets one already kept is taken as the
+// same root (a count too low only ever says "not complete"). Missing roots: all paths again with
+// another γ. N pairwise disjoint certified boxes, N the family's root count, prove the list
+// complete (a member has at most N isolated roots: Morgan & Sommese 1989).
+#include "relpos/complete/fiber.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "homotopy.hpp"
+#include "krawczyk.hpp"
+#include "random.hpp"
+
+namespace relpos::complete {
+namespace {
+
+// Real roots first, then by coordinates (real part, then imaginary), for a stable order.
+bool before(const CertifiedRoot& a, const CertifiedRoot& b) {
+  if (a.real != b.real) return a.real;
+  for (Eigen::Index i = 0; i < a.x.size(); ++i) {
+    if (a.x[i].real() != b.x[i].real()) return a.x[i].real() < b.x[i].real();
+    if (a.x[i].imag() != b.x[i].imag()) return a.x[i].imag() < b.x[i].imag();
+  }
+  return false;
+}
+
+}  // namespace
+
+FiberResult solveFiber(const Family& f, const std::vector<double>& target,
+                       const FiberOptions& options) {
+  FiberResult result;
+  const StartSystem& start = startSystem(f);
+  result.root_count = static_cast<int>(start.roots.size());
+  const int np = f.parameterCount();
+  if (static_cast<int>(target.size()) != np) return result;
+  for (double v : target)
+    if (!std::isfinite(v)) return result;
+  const detail::CompiledShape shape(f.shape());
+  const int terms = shape.terms();
+  std::vector<Complex> p1(target.begin(), target.end());
+  std::vector<Complex> c1(terms);
+  f.coefficients(p1.data(), c1.data());
+  std::vector<Interval> ip(target.begin(), target.end()), ic(terms);
+  f.coefficients(ip.data(), ic.data());
+  detail::Certifier certifier(shape, ic.data());
+  const detail::CoefficientPolynomials poly =
+      detail::interpolateSegment(f, start.params.data(), p1.data());
+
+  // Path i's certificate lands in slot i whichever thread tracked it, and the slots are merged
+  // in path order: the same answer for every thread count.
+  const int paths = result.root_count;
+  const int threads = std::clamp(options.threads, 1, std::max(1, paths));
+  std::vector<detail::BoxCertificate> slots(paths), kept;
+  for (int attempt = 0; attempt < std::max(1, options.attempts); ++attempt) {
+    result.attempts = attempt + 1;
+    const Complex gamma = detail::randomGamma(detail::mixSeed(options.seed, attempt));
+    auto work = [&](int first, detail::Certifier& cert) {
+      detail::Tracker tracker(shape, poly, detail::Arc{gamma}, c1.data());
+      for (int i = first; i < paths; i += threads) {
+        slots[i] = detail::BoxCertificate();
+        const detail::PathEnd e = tracker.track(detail::CVec(start.roots[i]));
+        if (e.status == detail::PathStatus::kFinite) slots[i] = cert.certify(e.x);
+      }
+    };
+    if (threads == 1) {
+      work(0, certifier);
+    } else {
+      std::vector<std::thread> pool;
+      for (int t = 1; t < threads; ++t)
+        pool.emplace_back([&, t] {
+          detail::Certifier own(shape, ic.data());
+          work(t, own);
+        });
+      work(0, certifier);
+      for (auto& th : pool) th.join();
+    }
+    for (auto& c : slots) {
+      if (!c.ok) continue;
+      bool known = false;
+      for (const auto& k : kept)
+        if (detail::boxesOverlap(k.x, k.radius, c.x, c.radius)) {
+          known = true;
+          break;
+        }
+      if (!known) kept.push_back(std::move(c));
+    }
+    if (static_cast<int>(kept.size()) >= result.root_count) break;
+  }
+  for (const auto& k : kept) {
+    CertifiedRoot r;
+    r.x = k.x;
+    r.radius = k.radius;
+    r.real = k.real;
+    result.roots.push_back(std::move(r));
+  }
+  std::sort(result.roots.begin(), result.roots.end(), before);
+  result.complete =
+      result.root_count > 0 && static_cast<int>(result.roots.size()) == result.root_count;
+  return result;
+}
+
+}  // namespace relpos::complete

@@ -1,0 +1,239 @@
+#include "homotopy.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "random.hpp"
+
+namespace relpos::complete::detail {
+namespace {
+
+double normInf(const CVec& x) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
+  return m;
+}
+
+bool finite(const CVec& x) {
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i].real()) || !std::isfinite(x[i].imag())) return false;
+  return true;
+}
+
+}  // namespace
+
+void CoefficientPolynomials::evaluate(Complex tau, Complex* c, Complex* dc) const {
+  // Horner for the value and the derivative together, on raw doubles (see evaluate()).
+  const int m = degree + 1;
+  const double tr = tau.real(), ti = tau.imag();
+  const double* av = reinterpret_cast<const double*>(a.data());
+  double* cv = reinterpret_cast<double*>(c);
+  double* dv = reinterpret_cast<double*>(dc);
+  for (int t = 0; t < terms; ++t) {
+    const double* at = av + 2 * static_cast<std::size_t>(t) * m;
+    double vr = at[2 * degree], vi = at[2 * degree + 1], dr = 0.0, di = 0.0;
+    for (int j = degree - 1; j >= 0; --j) {
+      const double ndr = dr * tr - di * ti + vr, ndi = dr * ti + di * tr + vi;
+      dr = ndr;
+      di = ndi;
+      const double nvr = vr * tr - vi * ti + at[2 * j], nvi = vr * ti + vi * tr + at[2 * j + 1];
+      vr = nvr;
+      vi = nvi;
+    }
+    cv[2 * t] = vr;
+    cv[2 * t + 1] = vi;
+    if (dc) {
+      dv[2 * t] = dr;
+      dv[2 * t + 1] = di;
+    }
+  }
+}
+
+CoefficientPolynomials interpolateSegment(const Family& f, const Complex* p0, const Complex* p1) {
+  CoefficientPolynomials out;
+  out.terms = static_cast<int>(f.shape().terms.size());
+  out.degree = std::max(0, f.coefficientDegree());
+  const int m = out.degree + 1;
+  const int np = f.parameterCount();
+  // Values at τ_k = k / degree, then the inverse Vandermonde matrix gives the monomial basis.
+  Eigen::MatrixXd V(m, m);
+  for (int k = 0; k < m; ++k) {
+    const double tk = out.degree == 0 ? 0.0 : double(k) / out.degree;
+    for (int j = 0; j < m; ++j) V(k, j) = std::pow(tk, j);
+  }
+  const Eigen::MatrixXd Vinv = V.inverse();
+  std::vector<Complex> params(np), values(static_cast<std::size_t>(m) * out.terms);
+  for (int k = 0; k < m; ++k) {
+    const double tk = out.degree == 0 ? 0.0 : double(k) / out.degree;
+    for (int i = 0; i < np; ++i) params[i] = p0[i] + tk * (p1[i] - p0[i]);
+    f.coefficients(params.data(), values.data() + static_cast<std::size_t>(k) * out.terms);
+  }
+  out.a.assign(static_cast<std::size_t>(m) * out.terms, Complex(0.0, 0.0));
+  for (int t = 0; t < out.terms; ++t)
+    for (int j = 0; j < m; ++j) {
+      Complex s(0.0, 0.0);
+      for (int k = 0; k < m; ++k)
+        s += Vinv(j, k) * values[static_cast<std::size_t>(k) * out.terms + t];
+      out.a[static_cast<std::size_t>(t) * m + j] = s;
+    }
+  return out;
+}
+
+Complex Arc::tau(double s) const { return gamma * s / (1.0 + (gamma - 1.0) * s); }
+
+Complex Arc::dtau(double s) const {
+  const Complex d = 1.0 + (gamma - 1.0) * s;
+  return gamma / (d * d);
+}
+
+Complex randomGamma(std::uint64_t seed) {
+  SplitMix64 rng(seed);
+  const double theta = 0.25 + 2.0 * rng.uniform();
+  return std::polar(1.0, rng.uniform() < 0.5 ? -theta : theta);
+}
+
+Tracker::Tracker(const CompiledShape& shape, const CoefficientPolynomials& coefficients, Arc arc,
+                 const Complex* end_coefficients, const TrackerOptions& options)
+    : shape_(shape),
+      poly_(coefficients),
+      arc_(arc),
+      end_(end_coefficients),
+      options_(options),
+      scratch_(shape),
+      c_(coefficients.terms),
+      dc_(coefficients.terms) {
+  const int n = shape.variables();
+  f_.resize(n);
+  fs_.resize(n);
+  J_.resize(n, n);
+}
+
+void Tracker::coefficientsAt(double s) {
+  if (s == s_cached_) return;
+  poly_.evaluate(arc_.tau(s), c_.data(), dc_.data());
+  const Complex dt = arc_.dtau(s);
+  double* dv = reinterpret_cast<double*>(dc_.data());
+  for (std::size_t t = 0; t < dc_.size(); ++t) {
+    const double re = dv[2 * t] * dt.real() - dv[2 * t + 1] * dt.imag();
+    dv[2 * t + 1] = dv[2 * t] * dt.imag() + dv[2 * t + 1] * dt.real();
+    dv[2 * t] = re;
+  }
+  s_cached_ = s;
+}
+
+bool Tracker::velocity(const CVec& x, double s, CVec& v) {
+  coefficientsAt(s);
+  evaluate(shape_, c_.data(), dc_.data(), x, scratch_, nullptr, &J_, &fs_);  // f unused
+  if (!lu_.factor(J_)) return false;
+  lu_.solve(fs_, v);
+  v = -v;
+  return finite(v);
+}
+
+double Tracker::newton(CVec& x, double s, CVec* v) {
+  coefficientsAt(s);
+  evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, &f_, &J_, v ? &fs_ : nullptr);
+  if (!lu_.factor(J_)) return -1.0;
+  lu_.solve(f_, d_);
+  if (!finite(d_)) return -1.0;
+  if (v) {
+    lu_.solve(fs_, *v);
+    *v = -*v;
+  }
+  x -= d_;
+  return normInf(d_);
+}
+
+double Tracker::chord(CVec& x) {
+  evaluate(shape_, c_.data(), nullptr, x, scratch_, &f_, nullptr, nullptr);
+  lu_.solve(f_, d_);
+  if (!finite(d_)) return -1.0;
+  x -= d_;
+  return normInf(d_);
+}
+
+PathEnd Tracker::track(const CVec& start) {
+  PathEnd end;
+  const int n = shape_.variables();
+  CVec x = start, y(n), k1(n), k2(n), k3(n), k4(n), k1_next(n);
+  const double limit = options_.divergence * (1.0 + normInf(start));
+  double s = 0.0, h = options_.initial_step;
+  if (!velocity(x, s, k1)) {
+    end.x = x;
+    return end;
+  }
+  while (s < 1.0) {
+    if (end.steps >= options_.max_steps) {
+      end.x = x;
+      return end;
+    }
+    const double hh = std::min(h, 1.0 - s);
+    const double s1 = (hh == 1.0 - s) ? 1.0 : s + hh;
+    // RK4; k1 is the velocity at x carried over from the last corrector.
+    bool ok = velocity(x + (0.5 * hh) * k1, s + 0.5 * hh, k2) &&
+              velocity(x + (0.5 * hh) * k2, s + 0.5 * hh, k3) && velocity(x + hh * k3, s1, k4);
+    double e1 = 0.0;
+    if (ok) {
+      y = x + (hh / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      const double scale = 1.0 + normInf(y);
+      e1 = newton(y, s1, &k1_next) / scale;
+      ok = e1 >= 0.0 && e1 <= options_.max_error;
+      // A large first correction must be followed by a much smaller one (Newton contracting
+      // quadratically from inside the path's basin, not sitting between two paths).
+      if (ok && e1 > options_.confirm_error) {
+        const double e2 = chord(y) / scale;
+        ok = e2 >= 0.0 && e2 <= 0.1 * e1;
+      }
+    }
+    ++end.steps;
+    if (ok) {
+      x = y;
+      s = s1;
+      k1 = k1_next;
+      const double grow = e1 > 0.0 ? 0.9 * std::pow(options_.target_error / e1, 0.2) : 3.0;
+      h = std::min(options_.max_step, hh * std::clamp(grow, 0.3, 3.0));
+      if (normInf(x) > limit) {
+        end.x = x;
+        end.status = PathStatus::kAtInfinity;
+        return end;
+      }
+    } else {
+      ++end.rejected;
+      h = 0.5 * hh;
+      if (h < options_.min_step) {
+        end.x = x;
+        end.status = normInf(x) > 1e4 * (1.0 + normInf(start)) ? PathStatus::kAtInfinity
+                                                               : PathStatus::kFailed;
+        return end;
+      }
+    }
+  }
+  if (end_) polish(shape_, end_, x, scratch_, 4);
+  end.x = x;
+  end.status = finite(x) ? PathStatus::kFinite : PathStatus::kFailed;
+  return end;
+}
+
+double polish(const CompiledShape& shape, const Complex* c, CVec& x, EvalScratch& scratch,
+              int iterations) {
+  const int n = shape.variables();
+  CVec f(n);
+  CMat J(n, n);
+  double last = -1.0;
+  for (int it = 0; it < iterations; ++it) {
+    evaluate(shape, c, nullptr, x, scratch, &f, &J, nullptr);
+    SmallLU lu;
+    CVec d(n);
+    if (!lu.factor(J)) return -1.0;
+    lu.solve(f, d);
+    if (!finite(d)) return -1.0;
+    x -= d;
+    last = normInf(d) / (1.0 + normInf(x));
+    if (last < 1e-15) break;
+  }
+  return last;
+}
+
+}  // namespace relpos::complete::detail

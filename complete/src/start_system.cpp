@@ -1,0 +1,190 @@
+// startSystem: the roots of one generic complex member per signature, by monodromy (Duff et al.
+// 2019): from the seed member's one known root, track every known root around loops
+// p0 → p1 → p2 → p0 through random complex members; a loop permutes the roots, so new ones appear
+// until every root is known. Stop after kStaleLoops loops that add nothing, then cross-check
+// with the total-degree homotopy when the Bézout number is small enough (the trace test is not
+// implemented; above the limit, a second monodromy from an independent member). Every root is
+// certified (Krawczyk on the member's double coefficients); two roots are taken as one only when a
+// box around both passes the test, so an uncertain case counts two — a count too high only ever
+// makes solveFiber say "not complete".
+#include "start_system.hpp"
+
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "homotopy.hpp"
+#include "krawczyk.hpp"
+#include "random.hpp"
+#include "relpos/complete/fiber.hpp"
+#include "total_degree.hpp"
+
+namespace relpos::complete {
+namespace {
+
+using detail::CVec;
+
+constexpr int kStaleLoops = 8;
+constexpr int kMaxLoops = 400;
+constexpr std::uint64_t kMaxBezout = 4096;
+
+double normInf(const CVec& x) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
+  return m;
+}
+
+// The certified roots of the start member found so far.
+class RootSet {
+ public:
+  RootSet(const detail::CompiledShape& shape, const Complex* coefficients)
+      : shape_(shape),
+        coefficients_(coefficients),
+        certifier_(shape, coefficients),
+        scratch_(shape) {}
+
+  // Polishes and certifies x; adds it unless it is a root already known. True if added.
+  bool add(CVec x) {
+    if (detail::polish(shape_, coefficients_, x, scratch_, 6) < 0.0) return false;
+    const detail::BoxCertificate c = certifier_.certify(x);
+    if (!c.ok) return false;
+    for (std::size_t i = 0; i < roots_.size(); ++i) {
+      if (!detail::boxesOverlap(roots_[i], radii_[i], c.x, c.radius)) continue;
+      // One root only if a box holding both boxes holds one root.
+      const double d = normInf(roots_[i] - c.x) + radii_[i] + c.radius;
+      if (certifier_.testComplex(roots_[i], 1.01 * d) || certifier_.testComplex(roots_[i], 10 * d))
+        return false;
+    }
+    roots_.push_back(c.x);
+    radii_.push_back(c.radius);
+    return true;
+  }
+  const std::vector<CVec>& roots() const { return roots_; }
+
+ private:
+  const detail::CompiledShape& shape_;
+  const Complex* coefficients_;
+  detail::Certifier certifier_;
+  detail::EvalScratch scratch_;
+  std::vector<CVec> roots_;
+  std::vector<double> radii_;
+};
+
+// Endpoints at p_to of the paths from `starts` at p_from (straight segment: both generic).
+std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& shape,
+                               const std::vector<Complex>& p_from, const std::vector<Complex>& p_to,
+                               const std::vector<CVec>& starts) {
+  const detail::CoefficientPolynomials poly =
+      detail::interpolateSegment(f, p_from.data(), p_to.data());
+  std::vector<Complex> end(shape.terms());
+  f.coefficients(p_to.data(), end.data());
+  detail::Tracker tracker(shape, poly, detail::Arc{}, end.data());
+  std::vector<CVec> out;
+  out.reserve(starts.size());
+  for (const CVec& s : starts) {
+    const detail::PathEnd e = tracker.track(s);
+    if (e.status == detail::PathStatus::kFinite) out.push_back(e.x);
+  }
+  return out;
+}
+
+// Monodromy loops at p0 from the roots in `set` until kStaleLoops loops add nothing (or
+// kMaxLoops); returns the loops run.
+int monodromy(const Family& f, const detail::CompiledShape& shape, const std::vector<Complex>& p0,
+              std::uint64_t seed, RootSet& set) {
+  const int np = f.parameterCount();
+  // Loop points: complex Gaussian, at the scale of the member's parameters.
+  double scale = 0.0;
+  for (const Complex& p : p0) scale += std::norm(p);
+  scale = np > 0 ? std::sqrt(scale / np) : 1.0;
+  if (!(scale > 0.0)) scale = 1.0;
+  detail::SplitMix64 rng(seed);
+  auto randomPoint = [&] {
+    std::vector<Complex> p(np);
+    for (auto& v : p) v = scale * rng.complexGaussian();
+    return p;
+  };
+  int stale = 0, loops = 0;
+  while (stale < kStaleLoops && loops < kMaxLoops) {
+    ++loops;
+    const std::vector<Complex> p1 = randomPoint(), p2 = randomPoint();
+    std::vector<CVec> x = trackSegment(f, shape, p0, p1, set.roots());
+    x = trackSegment(f, shape, p1, p2, x);
+    x = trackSegment(f, shape, p2, p0, x);
+    int added = 0;
+    for (const CVec& e : x) added += set.add(e) ? 1 : 0;
+    stale = added == 0 ? stale + 1 : 0;
+  }
+  return loops;
+}
+
+}  // namespace
+
+namespace detail {
+
+std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout) {
+  auto out = std::make_unique<StartSystem>();
+  const CompiledShape shape(f.shape());
+  const int n = shape.variables();
+  const int np = f.parameterCount();
+  const std::uint64_t seed = stableHash(f.signature());
+  std::vector<Complex> p0(np);
+  CVec x0(n);
+  f.seedMember(seed, p0.data(), x0.data());
+  out->params = p0;
+  std::vector<Complex> c0(shape.terms());
+  f.coefficients(p0.data(), c0.data());
+  RootSet set(shape, c0.data());
+  set.add(x0);
+  if (set.roots().empty()) {
+    out->check = "seed root not certified";
+    return out;
+  }
+  out->monodromy_loops = monodromy(f, shape, p0, mixSeed(seed, 1), set);
+  out->check = "monodromy";
+  const std::uint64_t bezout = bezoutNumber(shape);
+  if (bezout > 0 && bezout <= max_bezout) {
+    // Cross-check: every root the total-degree homotopy finds, added.
+    const std::size_t before = set.roots().size();
+    for (const CVec& e : totalDegreeEndpoints(f.shape(), c0.data(), mixSeed(seed, 2))) set.add(e);
+    out->total_degree_paths = static_cast<int>(bezout);
+    out->total_degree_added = static_cast<int>(set.roots().size() - before);
+    out->check = "monodromy+total-degree";
+  } else {
+    // Too many Bézout paths: monodromy again from an independent seed member, its roots
+    // carried to p0 and added (a root both runs missed is unlikely; neither is a proof).
+    std::vector<Complex> q0(np), d0(shape.terms());
+    CVec y0(n);
+    f.seedMember(mixSeed(seed, 3), q0.data(), y0.data());
+    f.coefficients(q0.data(), d0.data());
+    RootSet other(shape, d0.data());
+    other.add(y0);
+    if (!other.roots().empty()) monodromy(f, shape, q0, mixSeed(seed, 4), other);
+    out->second_monodromy_roots = static_cast<int>(other.roots().size());
+    const std::size_t before = set.roots().size();
+    for (const CVec& e : trackSegment(f, shape, q0, p0, other.roots())) set.add(e);
+    out->second_monodromy_added = static_cast<int>(set.roots().size() - before);
+    out->check = "monodromy+second-monodromy";
+  }
+  for (const CVec& r : set.roots()) out->roots.push_back(r);
+  return out;
+}
+
+}  // namespace detail
+
+namespace {}  // namespace
+
+const StartSystem& startSystem(const Family& f) {
+  // One computation per signature for the process; the lock is held while computing so two
+  // threads asking for the same signature compute it once.
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<StartSystem>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find(f.signature());
+  if (it == cache.end())
+    it = cache.emplace(f.signature(), detail::computeStartSystem(f, kMaxBezout)).first;
+  return *it->second;
+}
+
+}  // namespace relpos::complete

@@ -1,0 +1,92 @@
+// Start systems by monodromy, checked against the families' known generic root counts (Bézout
+// for two conics; 40 for the general Stewart–Gough platform: Raghavan 1993, Wampler 1996).
+#include "start_system.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "polynomial_eval.hpp"
+#include "relpos/complete/fiber.hpp"
+#include "test_families.hpp"
+
+namespace relpos::complete {
+namespace {
+
+// Every root is a root (small residual) and no two are numerically equal.
+void expectDistinctRoots(const Family& f, const StartSystem& s) {
+  const detail::CompiledShape shape(f.shape());
+  std::vector<Complex> c(shape.terms());
+  f.coefficients(s.params.data(), c.data());
+  detail::EvalScratch scratch(shape);
+  for (std::size_t i = 0; i < s.roots.size(); ++i) {
+    detail::CVec fx(shape.variables());
+    detail::evaluate(shape, c.data(), nullptr, detail::CVec(s.roots[i]), scratch, &fx, nullptr,
+                     nullptr);
+    EXPECT_LT(fx.norm(), 1e-9 * (1.0 + s.roots[i].squaredNorm())) << "root " << i;
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GT((s.roots[i] - s.roots[j]).norm(), 1e-6) << i << " " << j;
+  }
+}
+
+TEST(StartSystem, TwoConicsHaveFourRoots) {
+  const testing::ConicFamily f;
+  const StartSystem& s = startSystem(f);
+  EXPECT_EQ(s.roots.size(), 4u);
+  EXPECT_EQ(s.check, "monodromy+total-degree");
+  EXPECT_EQ(s.total_degree_paths, 4);
+  EXPECT_EQ(s.total_degree_added, 0);
+  expectDistinctRoots(f, s);
+  EXPECT_EQ(&startSystem(f), &s);  // cached
+}
+
+TEST(StartSystem, StewartGoughHasFortyRoots) {
+  const testing::StewartFamily f;
+  const auto t0 = std::chrono::steady_clock::now();
+  const StartSystem& s = startSystem(f);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ::testing::Test::RecordProperty("start_system_ms", std::to_string(ms));
+  std::printf("startSystem(Stewart 6-6): %.1f ms, %d loops, %s, total-degree added %d\n", ms,
+              s.monodromy_loops, s.check.c_str(), s.total_degree_added);
+  EXPECT_EQ(s.roots.size(), 40u);
+  EXPECT_EQ(s.check, "monodromy+total-degree");
+  EXPECT_EQ(s.total_degree_paths, 128);
+  expectDistinctRoots(f, s);
+}
+
+class DenseStartSystem : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+// A generic dense system of n equations of degree d has d^n roots (Bézout).
+TEST_P(DenseStartSystem, FindsTheBezoutNumberOfRoots) {
+  const auto [n, d] = GetParam();
+  const testing::DenseFamily f(n, d);
+  const StartSystem& s = startSystem(f);
+  int expected = 1;
+  for (int i = 0; i < n; ++i) expected *= d;
+  EXPECT_EQ(static_cast<int>(s.roots.size()), expected);
+  EXPECT_EQ(s.total_degree_paths, expected);
+  EXPECT_EQ(s.total_degree_added, 0);  // monodromy had found them all
+  expectDistinctRoots(f, s);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, DenseStartSystem,
+                         ::testing::Values(std::make_pair(1, 4), std::make_pair(2, 3),
+                                           std::make_pair(3, 2), std::make_pair(2, 4),
+                                           std::make_pair(4, 2)));
+
+// Above the Bézout limit the count is cross-checked by a second, independent monodromy run.
+TEST(StartSystem, ASecondMonodromyRunAgreesWhenBezoutIsTooLarge) {
+  const testing::DenseFamily f(3, 2);
+  const auto s = detail::computeStartSystem(f, 4);  // Bézout 8 > 4
+  EXPECT_EQ(s->check, "monodromy+second-monodromy");
+  EXPECT_EQ(s->total_degree_paths, 0);
+  EXPECT_EQ(s->roots.size(), 8u);
+  EXPECT_EQ(s->second_monodromy_roots, 8);
+  EXPECT_EQ(s->second_monodromy_added, 0);
+  expectDistinctRoots(f, *s);
+}
+
+}  // namespace
+}  // namespace relpos::complete
