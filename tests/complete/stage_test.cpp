@@ -31,7 +31,7 @@ double nearestBranch(const Solution& s, const Isometry3d& X) {
 
 void expectCertificates(const Solution& s, const StageReport& r) {
   ASSERT_EQ(r.certificates.size(), s.branches.size());
-  EXPECT_EQ(s.complete, r.complete);
+  EXPECT_FALSE(s.complete);  // positive-dimensional sets are not excluded
   for (std::size_t i = 0; i < s.branches.size(); ++i) {
     const auto& c = r.certificates[i];
     EXPECT_GE(c.radius, 0.0);
@@ -179,7 +179,9 @@ TEST(Stage, CylinderInACorner) {
   }
 }
 
-TEST(Stage, NoPoseIsProvenInconsistent) {
+// No pose: every isolated root found, none real; the stage still declines (a positive-
+// dimensional set of poses is not excluded), never claiming inconsistent.
+TEST(Stage, NoIsolatedPoseIsNotClaimedInconsistent) {
   std::mt19937_64 rng(35);
   Problem p;
   // Fixed points 10 apart, mobile ones 1 apart, legs 0.1 long: no pose.
@@ -190,10 +192,10 @@ TEST(Stage, NoPoseIsProvenInconsistent) {
   }
   Solution s;
   StageReport r;
-  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
-  EXPECT_EQ(s.status, Status::kInconsistent);
+  EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r));
   EXPECT_TRUE(r.complete);
-  EXPECT_EQ(s.conflicts.size(), 6u);
+  EXPECT_EQ(r.real_roots, 0);
+  EXPECT_NE(s.message.find("not excluded"), std::string::npos) << s.message;
   EXPECT_TRUE(s.branches.empty());
 }
 
@@ -223,7 +225,7 @@ TEST(Stage, SolveHandsTheRulesLeftoversToTheStage) {
   const Problem p = test::sixSix(rng, X);
   const Solution s = solve(p, registryWithStage());
   ASSERT_EQ(s.status, Status::kSolved) << s.message;
-  EXPECT_TRUE(s.complete);
+  EXPECT_FALSE(s.complete);
   EXPECT_LT(nearestBranch(s, X), 1e-8);
   for (const Branch& b : s.branches) {
     EXPECT_FALSE(b.exact);
@@ -239,7 +241,8 @@ TEST(Stage, SolveHandsTheRulesLeftoversToTheStage) {
 
 // Random problems of 3 to 6 constraints measured at a random pose, which the rules leave
 // unhandled: the stage, through solve(), never answers inconsistent (the pose exists), and when
-// it answers the pose is among its branches (and must be when it says complete).
+// every isolated root was found the pose is among its branches (these are generic: no
+// positive-dimensional set of poses).
 TEST(Stage, RandomProblemsTheRulesLeave) {
   std::mt19937_64 rng(41);
   int answered = 0;
@@ -253,9 +256,7 @@ TEST(Stage, RandomProblemsTheRulesLeave) {
     if (s.status == Status::kUnhandled) continue;
     ++answered;
     ASSERT_EQ(s.status, Status::kSolved) << "trial " << trial << ": " << s.message;
-    if (s.complete) {
-      EXPECT_LT(nearestBranch(s, X), 1e-7) << "trial " << trial;
-    }
+    EXPECT_LT(nearestBranch(s, X), 1e-7) << "trial " << trial;
   }
   EXPECT_GT(answered, 0);
 }
