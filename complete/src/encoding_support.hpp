@@ -53,6 +53,11 @@ void normalsAcross(const Vector3d& u, Vector3d* n1, Vector3d* n2);
 // (kAngleRangeSlack: 180° is an ulp or so beyond π).
 bool angleAt(double v, double at);
 
+// The constraints' indices in a canonical order (by type, kinds, orientation, value and the
+// features' coordinates): the encoding of a permutation of the constraints is the same member of
+// the same family, so its answer is the same.
+std::vector<int> canonicalOrder(const Problem& problem);
+
 // Whether the constraint type is a built-in one this stage encodes (with its exact value).
 bool isEncodedType(const std::string& type);
 

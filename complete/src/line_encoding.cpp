@@ -15,10 +15,11 @@ using L = LineEquationKind;
 
 bool onLine(FK k) { return k == FK::kLine || k == FK::kCylinder; }
 
-// The first mobile line (or axis) of the constraints.
+// The first mobile line (or axis) of the constraints in their canonical order (the same for a
+// permutation of them).
 const Feature* referenceLine(const Problem& problem) {
-  for (const InputConstraint& c : problem.constraints)
-    if (onLine(c.mobile.kind)) return &c.mobile;
+  for (const int i : detail::canonicalOrder(problem))
+    if (onLine(problem.constraints[i].mobile.kind)) return &problem.constraints[i].mobile;
   return nullptr;
 }
 
@@ -52,7 +53,7 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
   };
   auto point = [&](const Vector3d& p) { return slots.shared(Slots::kFixed, Slots::kPoint, p); };
   auto dir = [&](const Vector3d& u) { return slots.shared(Slots::kFixed, Slots::kDirection, u); };
-  for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
+  for (const int i : detail::canonicalOrder(problem)) {
     const InputConstraint& c = problem.constraints[i];
     const std::string at = "constraint " + std::to_string(i) + ": ";
     if (!detail::isEncodedType(c.type) || (c.isRange() && c.min != c.max)) {

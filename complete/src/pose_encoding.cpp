@@ -235,7 +235,7 @@ bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::strin
   out->chart = kCharts[chart == 0 ? 0 : 1];
   PoseEncoder encoder(out, why, alternative);
   encoder.chart(out->chart);
-  for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
+  for (const int i : detail::canonicalOrder(problem)) {
     const InputConstraint& c = problem.constraints[i];
     const std::string at = "constraint " + std::to_string(i) + ": ";
     if (!detail::isEncodedType(c.type)) {
