@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace relpos::complete::detail {
 namespace {
@@ -73,6 +74,25 @@ void normalsAcross(const Vector3d& u, Vector3d* n1, Vector3d* n2) {
   *n1 = anyPerpendicular(u).normalized();
   *n2 = u.cross(*n1).normalized();
 }
+
+std::vector<int> canonicalOrder(const Problem& problem) {
+  auto key = [&](int i) {
+    const InputConstraint& c = problem.constraints[i];
+    const Feature f = c.fixed.placed(problem.fixed.pose);
+    const Feature& m = c.mobile;
+    return std::make_tuple(c.type, f.kind, m.kind, c.orientation, c.parallel, c.value,
+                           std::make_tuple(f.point.x(), f.point.y(), f.point.z(), f.direction.x(),
+                                           f.direction.y(), f.direction.z(), f.radius),
+                           std::make_tuple(m.point.x(), m.point.y(), m.point.z(), m.direction.x(),
+                                           m.direction.y(), m.direction.z(), m.radius));
+  };
+  std::vector<int> order(problem.constraints.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  return order;
+}
+
+bool angleAt(double v, double at) { return std::abs(v - at) <= kAngleRangeSlack; }
 
 bool isEncodedType(const std::string& type) {
   return type == "distance" || type == "angle" || type == "coincident" || type == "parallel" ||

@@ -9,6 +9,7 @@
 
 #include "relpos/complete/study.hpp"
 #include "relpos/core/problem.hpp"
+#include "relpos/core/tolerance.hpp"
 
 namespace relpos::complete::detail {
 
@@ -46,6 +47,16 @@ class Slots {
 // Two unit vectors completing unit u to an orthonormal basis (the normals of two planes meeting
 // in a line along u).
 void normalsAcross(const Vector3d& u, Vector3d* n1, Vector3d* n2);
+
+// Whether angle v is `at` (0, π, ±π/2: where a cosine or sine is ±1, a parallelism rather than
+// one equation, whose ±1 is a double root) to the rounding of a value converted from degrees
+// (kAngleRangeSlack: 180° is an ulp or so beyond π).
+bool angleAt(double v, double at);
+
+// The constraints' indices in a canonical order (by type, kinds, orientation, value and the
+// features' coordinates): the encoding of a permutation of the constraints is the same member of
+// the same family, so its answer is the same.
+std::vector<int> canonicalOrder(const Problem& problem);
 
 // Whether the constraint type is a built-in one this stage encodes (with its exact value).
 bool isEncodedType(const std::string& type);

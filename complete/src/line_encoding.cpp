@@ -15,10 +15,11 @@ using L = LineEquationKind;
 
 bool onLine(FK k) { return k == FK::kLine || k == FK::kCylinder; }
 
-// The first mobile line (or axis) of the constraints.
+// The first mobile line (or axis) of the constraints in their canonical order (the same for a
+// permutation of them).
 const Feature* referenceLine(const Problem& problem) {
-  for (const InputConstraint& c : problem.constraints)
-    if (onLine(c.mobile.kind)) return &c.mobile;
+  for (const int i : detail::canonicalOrder(problem))
+    if (onLine(problem.constraints[i].mobile.kind)) return &problem.constraints[i].mobile;
   return nullptr;
 }
 
@@ -52,7 +53,7 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
   };
   auto point = [&](const Vector3d& p) { return slots.shared(Slots::kFixed, Slots::kPoint, p); };
   auto dir = [&](const Vector3d& u) { return slots.shared(Slots::kFixed, Slots::kDirection, u); };
-  for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
+  for (const int i : detail::canonicalOrder(problem)) {
     const InputConstraint& c = problem.constraints[i];
     const std::string at = "constraint " + std::to_string(i) + ": ";
     if (!detail::isEncodedType(c.type) || (c.isRange() && c.min != c.max)) {
@@ -96,10 +97,10 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     } else if (c.type == "angle" && !cylinder) {
       const bool same = f == FK::kLine;
       const double kappa = same ? std::cos(value) : std::sin(value);
-      if (same && (value == 0.0 || value == kPi)) {
-        parallel(F.direction, value == 0.0 ? Orientation::kAligned : Orientation::kOpposed),
-            ok = true;
-      } else if (!same && std::abs(value) == kPi / 2) {
+      const bool zero = detail::angleAt(value, 0.0);
+      if (same && (zero || detail::angleAt(value, kPi))) {
+        parallel(F.direction, zero ? Orientation::kAligned : Orientation::kOpposed), ok = true;
+      } else if (!same && detail::angleAt(std::abs(value), kPi / 2)) {
         parallel(F.direction, value > 0 ? Orientation::kAligned : Orientation::kOpposed), ok = true;
       } else {
         push(L::kDirection, dir(F.direction), s * kappa), ok = true;
@@ -110,6 +111,17 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     } else if (c.type == "perpendicular" && !cylinder) {
       if (f == FK::kLine) push(L::kDirection, dir(F.direction), 0.0), ok = true;
       if (f == FK::kPlane) parallel(F.direction, c.orientation), ok = true;
+    } else if (c.type == "tangent" && cylinder) {
+      const double r = n.mobile.radius;
+      if (f == FK::kPlane && c.orientation != Orientation::kEither) {
+        // The axis in the plane's direction at signed distance −r (aligned) or +r (opposed).
+        const double d = c.orientation == Orientation::kAligned ? -r : r;
+        push(L::kDirection, dir(F.direction), 0.0);
+        push(L::kPlaneOffset, dir(F.direction), d + F.direction.dot(F.point)), ok = true;
+      } else if (f == FK::kCylinder) {  // axes parallel either way, r₁ + r₂ apart
+        parallel(F.direction, Orientation::kEither);
+        push(L::kPointDistance, point(F.point), (F.radius + r) * (F.radius + r)), ok = true;
+      }
     }
     if (!ok) {
       *why = at + "'" + c.type + "' " + toString(f) + "-" + toString(c.mobile.kind) +
@@ -118,6 +130,13 @@ bool encodeLine(const Problem& problem, const Tolerance& tol, LineEncoding* out,
     }
   }
   const int n = static_cast<int>(out->equations.size()) - 2;
+  int directional = 0;  // equations on the direction alone
+  for (const LineEquation& q : out->equations) directional += q.kind == L::kDirection;
+  if (n == 4 && directional > 2) {
+    *why = std::to_string(directional) +
+           " equations on the line's direction alone (2 unknowns): not isolated lines";
+    return false;
+  }
   if (n != 4) {
     *why = "the constraints give " + std::to_string(n) +
            " equations on the line (4 unknowns): not isolated lines";

@@ -40,12 +40,6 @@ Poly<S> lineEquation(const LineEquation& q, const S* p) {
   throw std::logic_error("unknown line equation");
 }
 
-template <typename S>
-void allLineEquations(const std::vector<LineEquation>& eqs, const S* p, std::vector<Poly<S>>& out) {
-  out.clear();
-  for (const LineEquation& q : eqs) out.push_back(lineEquation(q, p));
-}
-
 std::string signatureOf(const std::vector<LineEquation>& eqs, int parameter_count) {
   std::string s = "line/" + std::to_string(parameter_count);
   for (const LineEquation& q : eqs)
@@ -56,22 +50,15 @@ std::string signatureOf(const std::vector<LineEquation>& eqs, int parameter_coun
 
 std::vector<int> checkedValueParams(const std::vector<LineEquation>& eqs, int n) {
   if (eqs.size() != 6) throw std::invalid_argument("a line family has 6 equations");
-  std::set<int> coordinates, values;
-  std::vector<int> value_param;
+  PolyFamily::ParameterUse use;
   for (const LineEquation& q : eqs) {
-    if (q.kind == K::kUnit || q.kind == K::kFoot) {
-      value_param.push_back(-1);
-      continue;
-    }
-    if (q.fixed < 0 || q.fixed + 3 > n) throw std::invalid_argument("parameter slot out of range");
-    for (int i = 0; i < 3; ++i) coordinates.insert(q.fixed + i);
-    if (q.value < 0 || q.value >= n || !values.insert(q.value).second)
-      throw std::invalid_argument("a value parameter must belong to one equation");
-    value_param.push_back(q.value);
+    const bool structural = q.kind == K::kUnit || q.kind == K::kFoot;
+    use.value(structural ? -1 : q.value);
+    if (structural) continue;
+    use.coordinates(q.fixed, 3);
+    if (q.value < 0) throw std::invalid_argument("an equation without its value parameter");
   }
-  for (int v : values)
-    if (coordinates.count(v)) throw std::invalid_argument("a value parameter used as a coordinate");
-  return value_param;
+  return use.checked(n);
 }
 
 }  // namespace
@@ -98,15 +85,14 @@ LineFamily::LineFamily(std::vector<LineEquation> equations, int parameter_count)
   build(6, parameter_count, signatureOf(equations_, parameter_count));
 }
 
-void LineFamily::equations(const Structure* p, std::vector<Poly<Structure>>& out) const {
-  allLineEquations(equations_, p, out);
+template <typename S>
+Poly<S> LineFamily::equation(std::size_t k, const S* params) const {
+  return lineEquation(equations_[k], params);
 }
-void LineFamily::equations(const Complex* p, std::vector<Poly<Complex>>& out) const {
-  allLineEquations(equations_, p, out);
-}
-void LineFamily::equations(const Interval* p, std::vector<Poly<Interval>>& out) const {
-  allLineEquations(equations_, p, out);
-}
+// The three passes PolyFamilyOf makes (other units see the declaration only).
+template Poly<Structure> LineFamily::equation(std::size_t, const Structure*) const;
+template Poly<Complex> LineFamily::equation(std::size_t, const Complex*) const;
+template Poly<Interval> LineFamily::equation(std::size_t, const Interval*) const;
 
 // A random complex unit direction, a foot orthogonal to it, random features, and the values.
 void LineFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -68,6 +69,26 @@ std::vector<Poly<Complex>> PolyFamily::equationsAt(const Complex* params) const 
   std::vector<Poly<Complex>> eqs;
   equations(params, eqs);
   return eqs;
+}
+
+void PolyFamily::ParameterUse::coordinates(int offset, int width) {
+  slots_.push_back({offset, width});
+}
+
+std::vector<int> PolyFamily::ParameterUse::checked(int parameter_count) const {
+  std::set<int> coordinates, values;
+  for (const auto& [offset, width] : slots_) {
+    if (offset < 0 || offset + width > parameter_count)
+      throw std::invalid_argument("parameter slot out of range");
+    for (int i = 0; i < width; ++i) coordinates.insert(offset + i);
+  }
+  for (int v : values_) {
+    if (v < 0) continue;
+    if (v >= parameter_count || !values.insert(v).second)
+      throw std::invalid_argument("a value parameter must belong to one equation");
+    if (coordinates.count(v)) throw std::invalid_argument("a value parameter used as a coordinate");
+  }
+  return values_;
 }
 
 Complex PolyFamily::randomComplex(std::mt19937_64& rng) {

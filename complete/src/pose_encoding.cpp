@@ -160,14 +160,14 @@ bool PoseEncoder::add(const InputConstraint& c, const NormalisedConstraint& n) {
     if (f == FK::kPlane && m == FK::kPlane) return planeOnPlane(F, M, c.orientation, v);
   } else if (c.type == "angle") {
     if (same) {  // arccos(u·R m) = v; 0 and π are parallelisms (u·R m = ±1 is a double root)
-      if (v == 0.0 || v == kPi)
+      if (detail::angleAt(v, 0.0) || detail::angleAt(v, kPi))
         return parallel(F.direction, M.direction,
-                        v == 0.0 ? Orientation::kAligned : Orientation::kOpposed),
+                        detail::angleAt(v, 0.0) ? Orientation::kAligned : Orientation::kOpposed),
                true;
       return direction(F.direction, M.direction, std::cos(v)), true;
     }
     // line-plane: arcsin(d·n) = v, either role
-    if (std::abs(v) == kPi / 2)
+    if (detail::angleAt(std::abs(v), kPi / 2))
       return parallel(F.direction, M.direction,
                       v > 0 ? Orientation::kAligned : Orientation::kOpposed),
              true;
@@ -235,7 +235,7 @@ bool encodePose(const Problem& problem, int chart, PoseEncoding* out, std::strin
   out->chart = kCharts[chart == 0 ? 0 : 1];
   PoseEncoder encoder(out, why, alternative);
   encoder.chart(out->chart);
-  for (std::size_t i = 0; i < problem.constraints.size(); ++i) {
+  for (const int i : detail::canonicalOrder(problem)) {
     const InputConstraint& c = problem.constraints[i];
     const std::string at = "constraint " + std::to_string(i) + ": ";
     if (!detail::isEncodedType(c.type)) {

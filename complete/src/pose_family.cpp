@@ -61,12 +61,6 @@ Poly<S> poseEquation(const PoseEquation& q, const S* p) {
   throw std::logic_error("unknown pose equation");
 }
 
-template <typename S>
-void allPoseEquations(const std::vector<PoseEquation>& eqs, const S* p, std::vector<Poly<S>>& out) {
-  out.clear();
-  for (const PoseEquation& q : eqs) out.push_back(poseEquation(q, p));
-}
-
 // "kind(fixed,mobile,line,value)" per equation: the offsets, assigned in order of first use by
 // the encoder, spell out which equations share which features.
 std::string signatureOf(const std::vector<PoseEquation>& eqs, int parameter_count) {
@@ -78,39 +72,24 @@ std::string signatureOf(const std::vector<PoseEquation>& eqs, int parameter_coun
   return s;
 }
 
-// Checks the slots: in range, and each value parameter in one equation only and never a
-// coordinate (seedMember solves it from that equation alone).
+// Every slot the equations read (seedMember solves each value parameter from its equation).
 std::vector<int> checkedValueParams(const std::vector<PoseEquation>& eqs, int n) {
   if (eqs.size() != 8) throw std::invalid_argument("a pose family has 8 equations");
-  std::set<int> coordinates, values;
-  std::vector<int> value_param;
-  auto slot = [&](int offset, int width, bool needed) {
-    if (offset < 0 && !needed) return;
-    if (offset < 0 || offset + width > n)
-      throw std::invalid_argument("parameter slot out of range");
-    for (int i = 0; i < width; ++i) coordinates.insert(offset + i);
-  };
+  PolyFamily::ParameterUse use;
   for (const PoseEquation& q : eqs) {
-    const bool points = q.kind != K::kChart && q.kind != K::kStudy;
-    slot(q.fixed, 3, points);
-    slot(q.mobile, 3, points);
-    slot(q.line, 3, q.kind == K::kPointLine || q.kind == K::kLinePoint);
     if (q.kind == K::kChart) {
-      slot(q.value, 4, true);
-      value_param.push_back(-1);
+      use.coordinates(q.value, 4);
+      use.value(-1);
       continue;
     }
-    if (q.kind == K::kStudy) {
-      value_param.push_back(-1);
-      continue;
-    }
-    if (q.value < 0 || q.value >= n || !values.insert(q.value).second)
-      throw std::invalid_argument("a value parameter must belong to one equation");
-    value_param.push_back(q.value);
+    use.value(q.kind == K::kStudy ? -1 : q.value);
+    if (q.kind == K::kStudy) continue;
+    use.coordinates(q.fixed, 3);
+    use.coordinates(q.mobile, 3);
+    if (q.kind == K::kPointLine || q.kind == K::kLinePoint) use.coordinates(q.line, 3);
+    if (q.value < 0) throw std::invalid_argument("an equation without its value parameter");
   }
-  for (int v : values)
-    if (coordinates.count(v)) throw std::invalid_argument("a value parameter used as a coordinate");
-  return value_param;
+  return use.checked(n);
 }
 
 }  // namespace
@@ -143,15 +122,14 @@ PoseFamily::PoseFamily(std::vector<PoseEquation> equations, int parameter_count)
   build(8, parameter_count, signatureOf(equations_, parameter_count));
 }
 
-void PoseFamily::equations(const Structure* p, std::vector<Poly<Structure>>& out) const {
-  allPoseEquations(equations_, p, out);
+template <typename S>
+Poly<S> PoseFamily::equation(std::size_t k, const S* params) const {
+  return poseEquation(equations_[k], params);
 }
-void PoseFamily::equations(const Complex* p, std::vector<Poly<Complex>>& out) const {
-  allPoseEquations(equations_, p, out);
-}
-void PoseFamily::equations(const Interval* p, std::vector<Poly<Interval>>& out) const {
-  allPoseEquations(equations_, p, out);
-}
+// The three passes PolyFamilyOf makes (other units see the declaration only).
+template Poly<Structure> PoseFamily::equation(std::size_t, const Structure*) const;
+template Poly<Complex> PoseFamily::equation(std::size_t, const Complex*) const;
+template Poly<Interval> PoseFamily::equation(std::size_t, const Interval*) const;
 
 // A random complex (e, g) on the chart and the Study quadric, random features, and the value
 // parameters that make it a root.

@@ -8,28 +8,18 @@
 #include <random>
 
 #include "family_eval.hpp"
+#include "known_problems.hpp"
 #include "relpos/complete/study.hpp"
 
 namespace relpos::complete {
 namespace {
 
 using test::evaluateMember;
+using test::maxAbs;
+using test::randomPose;
+using test::randomVector;
 using test::realMember;
 using K = PoseEquationKind;
-
-Vector3d randomVector(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double x = u(rng), y = u(rng);
-  return {x, y, u(rng)};
-}
-
-Isometry3d randomPose(std::mt19937_64& rng) {
-  const Vector3d axis = randomVector(rng).normalized();
-  Isometry3d X = Isometry3d::Identity();
-  X.linear() = axisAngle(axis, 3.0 * randomVector(rng).x());
-  X.translation() = randomVector(rng);
-  return X;
-}
 
 // A real member with one equation of every kind, its parameters read off the pose X (so X is a
 // root), with a shared mobile point (in kPointPoint and kPointPlane) and a shared fixed line.
@@ -80,12 +70,6 @@ RealMember memberOf(const Isometry3d& X, std::mt19937_64& rng) {
 }
 
 std::vector<Complex> asComplex(const Vector8d& x) { return {x.data(), x.data() + 8}; }
-
-double maxAbs(const std::vector<Complex>& v) {
-  double m = 0.0;
-  for (const Complex& z : v) m = std::max(m, std::abs(z));
-  return m;
-}
 
 TEST(PoseFamily, EveryEquationVanishesAtTheTruePoseAndNotNearIt) {
   std::mt19937_64 rng(11);

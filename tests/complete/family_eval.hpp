@@ -1,6 +1,7 @@
 #pragma once
 // Evaluates a Family's member through its public interface (shape + coefficients), as the engine
 // does: what the encoding tests check the equations with.
+#include <algorithm>
 #include <complex>
 #include <vector>
 
@@ -26,6 +27,12 @@ inline std::vector<Complex> evaluateMember(const Family& f, const std::vector<Co
   }
   for (std::size_t k = 0; k < out.size(); ++k) out[k] /= size[k] > 0.0 ? size[k] : 1.0;
   return out;
+}
+
+inline double maxAbs(const std::vector<Complex>& v) {
+  double m = 0.0;
+  for (const Complex& z : v) m = std::max(m, std::abs(z));
+  return m;
 }
 
 inline std::vector<Complex> realMember(const std::vector<double>& p) {

@@ -191,6 +191,65 @@ Problem fourSpheres(std::mt19937_64& rng, const Vector3d& q, const Vector3d& w) 
   return p;
 }
 
+void addRandomConstraint(Problem& p, std::mt19937_64& rng, const Isometry3d& X, int i) {
+  const std::string F = "F" + std::to_string(i), M = "M" + std::to_string(i);
+  const Matrix3d& R = X.linear();
+  std::uniform_int_distribution<int> kind(0, 9);
+  const Vector3d a = randomVector(rng), b = randomVector(rng), u = randomVector(rng).normalized(),
+                 m = randomVector(rng).normalized();
+  switch (kind(rng)) {
+    case 0:
+      p.addFixedFeature(F, Feature::makePoint(a));
+      p.addMobileFeature(M, Feature::makePoint(b));
+      p.addConstraint("distance", F, M, (X * b - a).norm());
+      break;
+    case 1:
+      p.addFixedFeature(F, Feature::makeLine(a, u));
+      p.addMobileFeature(M, Feature::makePoint(b));
+      p.addConstraint("distance", F, M, (X * b - a).cross(u).norm());
+      break;
+    case 2:
+      p.addFixedFeature(F, Feature::makePoint(a));
+      p.addMobileFeature(M, Feature::makeLine(b, m));
+      p.addConstraint("distance", F, M, (a - X * b).cross(R * m).norm());
+      break;
+    case 3:
+      p.addFixedFeature(F, Feature::makePlane(a, u));
+      p.addMobileFeature(M, Feature::makePoint(b));
+      p.addConstraint("distance", F, M, (X * b - a).dot(u));
+      break;
+    case 4:
+      p.addFixedFeature(F, Feature::makePoint(a));
+      p.addMobileFeature(M, Feature::makePlane(b, m));
+      p.addConstraint("distance", F, M, (a - X * b).dot(R * m));
+      break;
+    case 5:
+      p.addFixedFeature(F, Feature::makeLine(a, u));
+      p.addMobileFeature(M, Feature::makeLine(b, m));
+      p.addConstraint("angle", F, M, std::acos(u.dot(R * m)));
+      break;
+    case 6:
+      p.addFixedFeature(F, Feature::makePlane(a, u));
+      p.addMobileFeature(M, Feature::makeLine(b, m));
+      p.addConstraint("angle", F, M, std::asin(u.dot(R * m)));
+      break;
+    case 7:
+      p.addFixedFeature(F, Feature::makeLine(X * b + 0.5 * u, u));
+      p.addMobileFeature(M, Feature::makePoint(b));
+      p.addConstraint("coincident", F, M);
+      break;
+    case 8:
+      p.addFixedFeature(F, Feature::makePlane(X * b + u.cross(randomVector(rng)), u));
+      p.addMobileFeature(M, Feature::makePoint(b));
+      p.addConstraint("coincident", F, M);
+      break;
+    default:
+      p.addFixedFeature(F, Feature::makeLine(a, R * m));
+      p.addMobileFeature(M, Feature::makeLine(b, m));
+      p.addConstraint("parallel", F, M);
+      break;
+  }
+}
 Problem scaledAndMoved(const Problem& p, double s, const Vector3d& d_W, const Vector3d& d_M) {
   Problem out = p;
   // Fixed features are given in the fixed frame: move them so that, placed, they move by d_W.

@@ -23,6 +23,11 @@ Problem mixed(int k, std::mt19937_64& rng, const Isometry3d& X);
 // points from the line (q, w) in the world: paper 001 §V-B's four spheres.
 Problem fourSpheres(std::mt19937_64& rng, const Vector3d& q, const Vector3d& w);
 
+// One random constraint between new features F<i> and M<i>, of a random kind (a distance of a
+// point to a point, line or plane either way round, an angle, a point on a line or a plane, a
+// parallelism), measured at X.
+void addRandomConstraint(Problem& p, std::mt19937_64& rng, const Isometry3d& X, int i);
+
 // The same problem with every length scaled by s, fixed features moved by d_W in the world and
 // mobile ones by d_M in the mobile frame (the true pose X becomes movedPose(X, …)).
 Problem scaledAndMoved(const Problem& p, double s, const Vector3d& d_W, const Vector3d& d_M);

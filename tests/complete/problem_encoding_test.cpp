@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "family_eval.hpp"
 #include "known_problems.hpp"
 
@@ -13,15 +15,10 @@ namespace relpos::complete {
 namespace {
 
 using test::evaluateMember;
+using test::maxAbs;
 using test::randomPose;
 using test::randomVector;
 using test::realMember;
-
-double maxAbs(const std::vector<Complex>& v) {
-  double m = 0.0;
-  for (const Complex& z : v) m = std::max(m, std::abs(z));
-  return m;
-}
 
 // The member of p's encoding at the Study parameters of X (in the encoding's frames): of the
 // subproblem (an orientation for each 'either' that changes the equations) where it is least.
@@ -89,6 +86,46 @@ TEST(PoseEncoding, EitherThatChangesTheEquationsMakesSubproblems) {
       EXPECT_LT(r, 1e-13);
     else
       EXPECT_GT(r, 1e-3) << alt;
+  }
+}
+
+// An angle of 0 or π (to the rounding of a value converted from degrees) is a parallelism: two
+// equations and the orientation checked on the roots, not u·R m = ±1, a double root.
+TEST(PoseEncoding, ExtremeAnglesAreParallelisms) {
+  std::mt19937_64 rng(28);
+  Problem p = test::sixSix(rng, randomPose(rng));
+  p.constraints.resize(4);
+  p.addFixedFeature("L", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitX()));
+  p.addMobileFeature("m", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitY()));
+  p.addConstraint("angle", "L", "m", 180.0 * (kPi / 180.0) + 4e-16);
+  PoseEncoding enc;
+  std::string why;
+  ASSERT_TRUE(encodePose(p, 0, &enc, &why)) << why;
+  ASSERT_EQ(enc.signs.size(), 1u);
+  EXPECT_EQ(enc.signs[0].sign, -1.0);
+  int directions = 0;
+  for (const PoseEquation& q : enc.equations) {
+    if (q.kind != PoseEquationKind::kDirection) continue;
+    ++directions;
+    EXPECT_EQ(enc.target[q.value], 0.0);  // on two planes through the fixed line
+  }
+  EXPECT_EQ(directions, 2);
+}
+
+// The constraints in another order: the same member of the same family (their canonical order).
+TEST(PoseEncoding, PermutedConstraintsAreTheSameMember) {
+  std::mt19937_64 rng(29);
+  for (int k = 0; k < test::kMixedProblems; ++k) {
+    const Problem p = test::mixed(k, rng, randomPose(rng));
+    Problem q = p;
+    std::reverse(q.constraints.begin(), q.constraints.end());
+    PoseEncoding a, b;
+    std::string why;
+    ASSERT_TRUE(encodePose(p, 0, &a, &why)) << why;
+    ASSERT_TRUE(encodePose(q, 0, &b, &why)) << why;
+    EXPECT_EQ(a.target, b.target) << p.name;
+    EXPECT_EQ(PoseFamily(a.equations, static_cast<int>(a.target.size())).signature(),
+              PoseFamily(b.equations, static_cast<int>(b.target.size())).signature());
   }
 }
 
@@ -178,6 +215,38 @@ TEST(LineEncoding, FourSpheres) {
       const std::vector<Complex> x = {dir.x(), dir.y(), dir.z(), qs.x(), qs.y(), qs.z()};
       EXPECT_LT(maxAbs(evaluateMember(f, realMember(enc.target), x)), 1e-13);
     }
+  }
+}
+
+// A cylinder lying in the corner of two planes (tangent to both): its axis, either way along
+// the corner, is a root of the line encoding.
+TEST(LineEncoding, CylinderInACorner) {
+  std::mt19937_64 rng(27);
+  Problem p;
+  const Vector3d n1 = randomVector(rng).normalized();
+  const Vector3d n2 = (n1.cross(randomVector(rng)) + 0.3 * n1).normalized();
+  const Vector3d w = n1.cross(n2).normalized();
+  const double r = 0.4;
+  // The axis: r behind each plane (each normal pointing away from it: aligned).
+  const Vector3d corner = randomVector(rng);
+  p.addFixedFeature("P1", Feature::makePlane(corner, n1));
+  p.addFixedFeature("P2", Feature::makePlane(corner, n2));
+  p.addMobileFeature("C", Feature::makeCylinder(Vector3d(0, 0, 0.5), Vector3d::UnitX(), r));
+  p.addConstraint("tangent", "P1", "C", 0.0, Orientation::kAligned);
+  p.addConstraint("tangent", "P2", "C", 0.0, Orientation::kAligned);
+  // A point on the axis: x·n1 = corner·n1 − r, x·n2 = corner·n2 − r.
+  Eigen::Matrix3d A;
+  A.row(0) = n1, A.row(1) = n2, A.row(2) = w;
+  const Vector3d x = A.inverse() * Vector3d(corner.dot(n1) - r, corner.dot(n2) - r, 0.0);
+  LineEncoding enc;
+  std::string why;
+  ASSERT_TRUE(encodeLine(p, Tolerance::forScale(2.0), &enc, &why)) << why;
+  const LineFamily f(enc.equations, static_cast<int>(enc.target.size()));
+  Vector3d qs = enc.frames.fixedPoint(x);
+  qs -= qs.dot(w) * w;
+  for (const Vector3d& dir : {w, Vector3d(-w)}) {
+    const std::vector<Complex> y = {dir.x(), dir.y(), dir.z(), qs.x(), qs.y(), qs.z()};
+    EXPECT_LT(maxAbs(evaluateMember(f, realMember(enc.target), y)), 1e-13);
   }
 }
 

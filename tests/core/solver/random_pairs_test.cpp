@@ -40,6 +40,10 @@ void checkKnown(const KnownProblem& kp, std::uint64_t seed, Tally& tally) {
   EXPECT_LT(worstSampledViolation(kp.problem, s, 16, seed, &where), 1e-7) << where;
   // With noise the exact solutions of the perturbed problem can sit sqrt(noise) away from the
   // known pose (two solutions splitting at a tangency), so the containment test allows for that.
+  // An answer not proven complete (the numeric stage's, docs/spec.md §8.3) need not hold the
+  // known pose: its branches are each checked above, its list may miss some (a special geometry's
+  // positive-dimensional set of poses beside the isolated ones it certified).
+  if (!s.complete) return;
   const double reach = std::max(1e-6, 100 * std::sqrt(kp.noise));
   const int dof = dofOfBranchesContaining(s, kp.X_WM_star, reach);
   EXPECT_GE(dof, 0) << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);

@@ -47,7 +47,7 @@ struct PoseEquation {
   int value = -1;   // D, h, κ; the chart's c
 };
 
-class PoseFamily final : public PolyFamily {
+class PoseFamily final : public PolyFamilyOf<PoseFamily> {
  public:
   // Eight equations over parameterCount parameters; throws std::invalid_argument when they do
   // not make a family (a slot out of range, a value parameter shared or used as a coordinate).
@@ -55,10 +55,10 @@ class PoseFamily final : public PolyFamily {
   void seedMember(std::uint64_t seed, Complex* params, Complex* root) const override;
   const std::vector<PoseEquation>& poseEquations() const { return equations_; }
 
- protected:
-  void equations(const Structure* p, std::vector<Poly<Structure>>& out) const override;
-  void equations(const Complex* p, std::vector<Poly<Complex>>& out) const override;
-  void equations(const Interval* p, std::vector<Poly<Interval>>& out) const override;
+  // PolyFamilyOf's equations.
+  std::size_t equationCount() const { return equations_.size(); }
+  template <typename S>
+  Poly<S> equation(std::size_t k, const S* params) const;
 
  private:
   std::vector<PoseEquation> equations_;
@@ -80,17 +80,17 @@ struct LineEquation {
   int value = -1;
 };
 
-class LineFamily final : public PolyFamily {
+class LineFamily final : public PolyFamilyOf<LineFamily> {
  public:
   // Six equations (w·w = 1 and q·w = 0 among them).
   LineFamily(std::vector<LineEquation> equations, int parameter_count);
   void seedMember(std::uint64_t seed, Complex* params, Complex* root) const override;
   const std::vector<LineEquation>& lineEquations() const { return equations_; }
 
- protected:
-  void equations(const Structure* p, std::vector<Poly<Structure>>& out) const override;
-  void equations(const Complex* p, std::vector<Poly<Complex>>& out) const override;
-  void equations(const Interval* p, std::vector<Poly<Interval>>& out) const override;
+  // PolyFamilyOf's equations.
+  std::size_t equationCount() const { return equations_.size(); }
+  template <typename S>
+  Poly<S> equation(std::size_t k, const S* params) const;
 
  private:
   std::vector<LineEquation> equations_;

@@ -25,6 +25,21 @@ class PolyFamily : public Family {
   // The equations as polynomials at complex parameters (for tests and seedMember).
   std::vector<Poly<Complex>> equationsAt(const Complex* params) const;
 
+  // Which parameters the equations read: coordinates (a slot of `width`) and each equation's
+  // value parameter (-1: none). checked() throws std::invalid_argument unless every index is
+  // below parameter_count and each value parameter belongs to one equation only and is no
+  // coordinate (what solveValueParameters needs); it returns the value parameters by equation.
+  class ParameterUse {
+   public:
+    void coordinates(int offset, int width);
+    void value(int v) { values_.push_back(v); }
+    std::vector<int> checked(int parameter_count) const;
+
+   private:
+    std::vector<std::pair<int, int>> slots_;
+    std::vector<int> values_;
+  };
+
  protected:
   // variables: the unknowns; signature: what the derived class says fixes its equations.
   void build(int variables, int parameter_count, std::string signature);
@@ -54,6 +69,31 @@ class PolyFamily : public Family {
   // Per equation, its terms' keys (sorted) and their indices in shape_.terms.
   std::vector<std::vector<MonomialKey>> keys_;
   std::vector<int> first_term_;
+};
+
+// PolyFamily's three scalar passes from one member template of Derived,
+// `template <typename S> Poly<S> equation(std::size_t k, const S* params) const`, over
+// `equationCount()` equations.
+template <typename Derived>
+class PolyFamilyOf : public PolyFamily {
+ protected:
+  void equations(const Structure* p, std::vector<Poly<Structure>>& out) const override {
+    write(p, out);
+  }
+  void equations(const Complex* p, std::vector<Poly<Complex>>& out) const override {
+    write(p, out);
+  }
+  void equations(const Interval* p, std::vector<Poly<Interval>>& out) const override {
+    write(p, out);
+  }
+
+ private:
+  template <typename S>
+  void write(const S* p, std::vector<Poly<S>>& out) const {
+    const Derived& self = static_cast<const Derived&>(*this);
+    out.clear();
+    for (std::size_t k = 0; k < self.equationCount(); ++k) out.push_back(self.equation(k, p));
+  }
 };
 
 }  // namespace relpos::complete

@@ -12,26 +12,31 @@
 
 namespace relpos::complete {
 
-// What proves each branch and the list (mirrors Branch::certified and Solution::complete).
+// What proves each branch and the list (Branch::certified and Solution::complete hold the same;
+// this adds the counts behind them).
 struct StageReport {
   struct Certificate {
     double radius = 0.0;  // position, problem units
     double angle = 0.0;   // rotation (a line's direction), radians
   };
   std::vector<Certificate> certificates;  // per branch of the solution
-  bool complete = false;                  // every root of the family certified
-  int root_count = 0;                     // the family's
-  int roots_found = 0;                    // distinct certified roots
-  int real_roots = 0;                     // proven real
-  std::string signature;                  // the family's
+  // Every isolated root of the family certified: no isolated pose is missing. (Not
+  // Solution::complete: a positive-dimensional set of poses is not excluded.)
+  bool complete = false;
+  int root_count = 0;     // the family's
+  int roots_found = 0;    // distinct certified roots
+  int real_roots = 0;     // proven real
+  std::string signature;  // the family's
 };
 
 // Applies when every constraint is a built-in type with an exact value that the encodings take
 // and they give as many equations as unknowns (6 for a pose; 4 for a line, when every mobile
-// feature lies on one line). Then: solved with the certified branches (0-DOF poses, or a line's
-// 2-DOF spin and slide), or inconsistent when all roots were found and none is a solution
-// (complete), and true. Otherwise false, with the reason in solution.message and nothing else
-// of the solution changed.
+// feature lies on one line). Then, when some certified real root meets every constraint: solved
+// with those branches (0-DOF poses, or a line's 2-DOF spin and slide), each exact = false with
+// its certificate (Branch::certified), solution.complete false (a positive-dimensional set of
+// poses is not excluded; report->complete says whether every isolated one was found), and true.
+// Otherwise false, with the reason in solution.message and nothing else of the solution changed
+// (never inconsistent: no real isolated root does not exclude a positive-dimensional set).
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report = nullptr);
 
