@@ -58,13 +58,25 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
   return worst;
 }
 
+// Whether the family's root count N rests on a trace test (a stored start system,
+// docs/spec.md §8.5), not only on monodromy and numerical cross-checks: measured, a start system
+// computed in the process can undercount (a random problem whose known pose was missed while its
+// N roots were all found), so only a trace-tested N proves that every isolated root was found.
+bool traceTestedCount(const Family& family) {
+  return startSystem(family).check.find("+trace") != std::string::npos;
+}
+
 // Every root the fiber certified: the non-real ones must be proven non-real for the list to be
 // complete; the real ones go to `accept` (which says whether each is a solution).
 template <typename Accept>
-void collect(const FiberResult& fiber, Answer& a, Accept accept) {
+void collect(const FiberResult& fiber, bool trace_tested, Answer& a, Accept accept) {
   // A family without isolated roots: the encoding's roots are not isolated (a set of poses),
   // and an empty list proves nothing.
   if (fiber.root_count <= 0) return doubt(a, "the family has no isolated roots");
+  if (!trace_tested)
+    doubt(a,
+          "the family's root count was not confirmed by a trace test (its start system was "
+          "computed in this process)");
   if (!fiber.complete)
     doubt(a, std::to_string(fiber.roots.size()) + " of the family's " +
                  std::to_string(fiber.root_count) + " roots certified");
@@ -82,6 +94,7 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
                           unsigned alternative, Answer& a, StageReport& report, std::string* why) {
   PoseEncoding enc;
   FiberResult fiber;
+  bool trace_tested = false;
   // A second chart when the first loses roots (a pose with c·e = 0 is at infinity in it).
   for (int chart = 0; chart < 2; ++chart) {
     PoseEncoding e;
@@ -90,13 +103,16 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
     FiberResult r = solveFiber(family, e.target);
     if (chart == 0)
       report.signature += (report.signature.empty() ? "" : " | ") + family.signature();
-    if (chart == 0 || r.roots.size() > fiber.roots.size()) fiber = std::move(r), enc = e;
+    if (chart == 0 || r.roots.size() > fiber.roots.size()) {
+      fiber = std::move(r), enc = e;
+      trace_tested = traceTestedCount(family);
+    }
     if (fiber.complete) break;
   }
   report.root_count += fiber.root_count;
   report.roots_found += static_cast<int>(fiber.roots.size());
   const SourceMask sources = allSources(problem);
-  collect(fiber, a, [&](const CertifiedRoot& r) {
+  collect(fiber, trace_tested, a, [&](const CertifiedRoot& r) {
     ++report.real_roots;
     Vector8d x;
     for (int i = 0; i < 8; ++i) x[i] = r.x[i].real();
@@ -174,7 +190,7 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
   report.root_count = fiber.root_count;
   report.roots_found = static_cast<int>(fiber.roots.size());
   const SourceMask sources = allSources(problem);
-  collect(fiber, a, [&](const CertifiedRoot& r) {
+  collect(fiber, traceTestedCount(family), a, [&](const CertifiedRoot& r) {
     ++report.real_roots;
     Eigen::Matrix<double, 6, 1> x;
     for (int i = 0; i < 6; ++i) x[i] = r.x[i].real();
@@ -244,7 +260,8 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
     solution.branches[i].certified = {a.certificates[i].radius, a.certificates[i].angle};
     solution.branches[i].origin = nullptr;
   }
-  solution.complete = false;  // see above
+  solution.complete = false;              // see above
+  solution.isolated_complete = a.proven;  // every isolated root certified (and every "either")
   rep.certificates = std::move(a.certificates);
   solution.status = Status::kSolved;
   solution.conflicts.clear();

@@ -14,6 +14,7 @@ namespace {
 void restoreUnhandled(Solution& solution, std::string message) {
   solution.status = Status::kUnhandled;
   solution.complete = false;
+  solution.isolated_complete = false;
   solution.branches.clear();
   solution.conflicts.clear();
   solution.redundant.clear();
@@ -39,9 +40,10 @@ std::string checkAnswer(const Problem& problem, const SolverOptions& options,
   const std::size_t n = problem.constraints.size();
   if (!indicesInRange(s.conflicts, n) || !indicesInRange(s.redundant, n))
     return "answered with a constraint index out of range";
+  if (s.complete) s.isolated_complete = true;  // every solution listed: every isolated one too
   if (s.status == Status::kInconsistent) {
     if (!s.branches.empty()) return "answered inconsistent with branches";
-    s.complete = true;  // proven: no pose, so none is missing
+    s.complete = s.isolated_complete = true;  // proven: no pose, so none is missing
     if (s.conflicts.empty())
       for (std::size_t i = 0; i < n; ++i) s.conflicts.push_back(static_cast<int>(i));
     if (s.message.empty()) s.message = "no pose satisfies the constraints (" + stage.name + ")";

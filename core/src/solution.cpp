@@ -42,6 +42,7 @@ Solution::Solution() {
 void Solution::clear() {
   status = Status::kNotSolved;
   complete = false;
+  isolated_complete = false;
   message.clear();
   branches.clear();
   conflicts.clear();

@@ -615,6 +615,7 @@ void solve(const Problem& problem, const Registry& registry, const SolverOptions
   // The rules' closed forms enumerate every branch: what they answered is complete.
   solution.complete =
       solution.status == Status::kSolved || solution.status == Status::kInconsistent;
+  solution.isolated_complete = solution.complete;
   // What the rules leave goes to the numeric stage (when one is registered); nothing more runs
   // for a problem they answered.
   if (solution.status == Status::kUnhandled && registry.fallback())
@@ -633,6 +634,7 @@ void solveConstraintSet(const ConstraintSet& set, const Tolerance& tol, const Re
   runPending(st);
   solution.complete =
       solution.status == Status::kSolved || solution.status == Status::kInconsistent;
+  solution.isolated_complete = solution.complete;
 }
 
 Solution solve(const Problem& problem, const Registry& registry, const SolverOptions& options) {

@@ -323,6 +323,8 @@ void writeReport(const Report& r, ResultFormat format, std::string& out) {
   w.string(toString(r.status));
   w.key("complete");
   w.boolean(r.complete);
+  w.key("isolated_complete");
+  w.boolean(r.isolated_complete);
   w.key("message");
   w.string(r.message);
   w.key("branches");

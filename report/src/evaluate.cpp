@@ -30,6 +30,7 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
   r.name = problem.name;
   r.status = solution.status;
   r.complete = solution.complete;
+  r.isolated_complete = solution.isolated_complete;
   resultMessage(problem, solution, r.message);
   r.conflicts.assign(solution.conflicts.begin(), solution.conflicts.end());
   r.redundant.assign(solution.redundant.begin(), solution.redundant.end());

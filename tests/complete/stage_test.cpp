@@ -63,7 +63,7 @@ TEST(Stage, SixSixPlatformHasItsFortyRootsAndTheTruePose) {
     ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
     EXPECT_EQ(s.status, Status::kSolved);
     EXPECT_EQ(r.root_count, 40);
-    EXPECT_TRUE(r.complete) << r.roots_found << " of " << r.root_count;
+    EXPECT_EQ(r.roots_found, r.root_count) << r.roots_found << " of " << r.root_count;
     EXPECT_EQ(static_cast<int>(s.branches.size()), r.real_roots);
     EXPECT_EQ(r.real_roots % 2, 0);  // complex roots come in conjugate pairs: 40 − real is even
     EXPECT_LT(nearestBranch(s, X), 1e-8);
@@ -80,7 +80,7 @@ TEST(Stage, OctahedralManipulatorIsItsOwnSixteenRootFamily) {
   StageReport r;
   ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
   EXPECT_EQ(r.root_count, 16);
-  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.roots_found, r.root_count);
   EXPECT_LT(nearestBranch(s, X), 1e-8);
   expectCertificates(s, r);
 }
@@ -94,7 +94,8 @@ TEST(Stage, MixedKindsFindTheTruePose) {
     StageReport r;
     ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r))
         << p.name << ": " << s.message;
-    EXPECT_TRUE(r.complete) << p.name << ": " << r.roots_found << " of " << r.root_count;
+    EXPECT_EQ(r.roots_found, r.root_count)
+        << p.name << ": " << r.roots_found << " of " << r.root_count;
     EXPECT_LT(nearestBranch(s, X), 1e-8) << p.name;
     expectCertificates(s, r);
   }
@@ -108,7 +109,7 @@ TEST(Stage, FourSpheresGiveTwelveLinesEachBothWays) {
   StageReport r;
   ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
   EXPECT_EQ(r.root_count, 24);
-  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.roots_found, r.root_count);
   EXPECT_EQ(r.real_roots % 2, 0);
   bool found = false;
   for (const Branch& b : s.branches) {
@@ -141,7 +142,7 @@ TEST(Stage, ALineAtTwoAnglesAndTwoDistances) {
   Solution s;
   StageReport r;
   ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
-  EXPECT_TRUE(r.complete) << r.roots_found << " of " << r.root_count;
+  EXPECT_EQ(r.roots_found, r.root_count) << r.roots_found << " of " << r.root_count;
   bool found = false;
   for (const Branch& b : s.branches) {
     EXPECT_EQ(b.manifold->dof(), 2);
@@ -166,7 +167,7 @@ TEST(Stage, CylinderInACorner) {
   StageReport r;
   ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
   EXPECT_EQ(r.root_count, 2);
-  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.roots_found, r.root_count);
   ASSERT_EQ(s.branches.size(), 2u);
   for (const Branch& b : s.branches) {
     EXPECT_EQ(b.manifold->dof(), 2);
@@ -193,7 +194,7 @@ TEST(Stage, NoIsolatedPoseIsNotClaimedInconsistent) {
   Solution s;
   StageReport r;
   EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r));
-  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.roots_found, r.root_count);
   EXPECT_EQ(r.real_roots, 0);
   EXPECT_NE(s.message.find("not excluded"), std::string::npos) << s.message;
   EXPECT_TRUE(s.branches.empty());

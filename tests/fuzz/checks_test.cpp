@@ -129,7 +129,11 @@ TEST(FuzzChecks, CompletenessAndCertificatesThatContradictTheResultAreBadOutput)
   const std::string no_branches =
       replaced(unhandled.substr(0, from) + unhandled.substr(to), "\"best\":0", "\"best\":null");
   EXPECT_TRUE(flagged(no_branches));
-  EXPECT_FALSE(flagged(replaced(no_branches, "\"complete\":true", "\"complete\":false")));
+  const std::string not_complete = replaced(no_branches, "\"complete\":true", "\"complete\":false");
+  // isolated_complete too (implied by complete; never for unhandled).
+  EXPECT_TRUE(flagged(not_complete));
+  EXPECT_FALSE(
+      flagged(replaced(not_complete, "\"isolated_complete\":true", "\"isolated_complete\":false")));
 }
 
 TEST(FuzzChecks, DiagnosticsMustBeOneLineWithAPath) {

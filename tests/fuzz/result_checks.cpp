@@ -71,6 +71,14 @@ class ResultReader {
     } else if (status == "inconsistent" && !j["complete"].get<bool>()) {
       bad("/complete", "false for an inconsistent result (it is only answered when proven)");
     }
+    // isolated_complete (§2.2): implied by complete, never for unhandled.
+    if (!j.contains("isolated_complete") || !j["isolated_complete"].is_boolean()) {
+      bad("/isolated_complete", "missing or not a boolean");
+    } else if (status == "unhandled" && j["isolated_complete"].get<bool>()) {
+      bad("/isolated_complete", "true for an unhandled result");
+    } else if (j.value("complete", false) && !j["isolated_complete"].get<bool>()) {
+      bad("/isolated_complete", "false for a complete result");
+    }
     if (!j.contains("message") || !j["message"].is_string()) {
       bad("/message", "missing or not a string");
     } else if (status != "solved" && j["message"].get<std::string>().empty()) {

@@ -116,7 +116,11 @@ void expectLine(const Problem& p, const ReportOptions& opt) {
   EXPECT_EQ(doc["name"], p.name);
   // "complete" right after "status", each branch's "exact" right after "manifold", and
   // "certified" exactly when it is not exact: as the Solution says.
-  EXPECT_EQ(keysOf(doc, 5), "relpos name status complete message ") << p.name;
+  EXPECT_EQ(keysOf(doc, 6), "relpos name status complete isolated_complete message ") << p.name;
+  EXPECT_EQ(doc["isolated_complete"], s.isolated_complete) << p.name;
+  if (s.complete) {
+    EXPECT_TRUE(s.isolated_complete) << p.name;
+  }
   EXPECT_EQ(doc["complete"], s.complete) << p.name;
   for (std::size_t b = 0; b < s.branches.size(); ++b) {
     const json& jb = doc["branches"][b];
@@ -214,7 +218,7 @@ TEST(ResultLine, ACertifiedBranchAndCompletenessRoundTripInBothLayouts) {
       std::string text;
       writeReport(report, format, text);
       const json doc = json::parse(text);
-      EXPECT_EQ(keysOf(doc, 5), "relpos name status complete message ") << text;
+      EXPECT_EQ(keysOf(doc, 6), "relpos name status complete isolated_complete message ") << text;
       EXPECT_EQ(doc["complete"], complete) << text;
       const json& b = doc["branches"][0];
       EXPECT_EQ(keysOf(b, 7),

@@ -52,6 +52,11 @@ struct Solution {
   // numeric stage (Registry::fallback) sets it from its proof (docs/spec.md §2.2, §8). An
   // inconsistent answer is always complete; an unhandled one never is.
   bool complete = false;
+  // Proven that no isolated solution is missing (docs/spec.md §2.2, §8.3): every pose that is
+  // alone in its neighbourhood among the solutions is on a branch. Implied by `complete`; the
+  // numeric stage proves it (every isolated root of the encoded system found and certified)
+  // where it cannot prove `complete` (a positive-dimensional set of poses is not excluded).
+  bool isolated_complete = false;
   std::string message = "relpos::solve was not called.";
   std::vector<Branch> branches;
   std::vector<int> conflicts;     // input constraint indices (inconsistent)

@@ -54,8 +54,9 @@ struct BranchReport {
 struct Report {
   std::string name;
   Status status = Status::kNotSolved;
-  bool complete = false;  // Solution::complete: proven that no solution is missing
-  std::string message;    // the solution's, with the user's constraint ids next to the conflicts
+  bool complete = false;           // Solution::complete: proven that no solution is missing
+  bool isolated_complete = false;  // Solution::isolated_complete: no isolated solution missing
+  std::string message;  // the solution's, with the user's constraint ids next to the conflicts
   std::vector<BranchReport> branches;
   std::vector<SamplePose> samples;  // every branch's, in branch order (BranchReport::first_sample)
   int best = -1;                    // the branch whose nearest pose is nearest; -1: none
