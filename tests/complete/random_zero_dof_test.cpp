@@ -258,8 +258,11 @@ void checkProblems(ZeroDofProblem (*make)(int), int first, int count, const std:
 }
 
 TEST_P(RandomZeroDof, KnownPoseFoundEveryPoseVerifiedCompleteNeverWrong) {
-  // Under a sanitizer (CI's second run) two shards: six start systems, not 24.
-  if (kSanitizedBuild && GetParam() >= 2) GTEST_SKIP() << "shards 2-7 run in the Release build";
+  // Some structures' start systems take minutes to compute (docs/spec.md §8.5; shard 1's ran
+  // over 7 minutes in CI): by default shards 0 and 2 (132 problems, about 30 s each in Release),
+  // all 528 with RELPOS_SLOW_TESTS=1; under a sanitizer (CI's second run) shard 0 only.
+  const bool by_default = GetParam() == 0 || (GetParam() == 2 && !kSanitizedBuild);
+  if (!by_default && !slowTestsWanted()) GTEST_SKIP() << "set RELPOS_SLOW_TESTS=1 to run";
   checkProblems(&makeProblem, GetParam() * kPerShard, kPerShard,
                 "shard " + std::to_string(GetParam()));
 }
