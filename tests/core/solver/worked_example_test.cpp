@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "evaluator.hpp"
-#include "relpos/io/spec_reader.hpp"
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 #include "test_config.hpp"
 
