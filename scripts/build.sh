@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Configures and builds relpos. Environment: BUILD_DIR (default build), BUILD_TYPE (Release),
-# SANITIZE (e.g. address,undefined), WERROR (ON/OFF).
+# SANITIZE (e.g. address,undefined), WERROR (ON/OFF), OPT_FLAGS (the build type's compiler flags,
+# e.g. "-O1 -g1 -DNDEBUG"; default CMake's), BENCH (ON/OFF: the Google Benchmark programs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 "$(dirname "$0")/install_deps.sh"
 BUILD_DIR=${BUILD_DIR:-build}
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" \
-  -DRELPOS_SANITIZE="${SANITIZE:-}" -DRELPOS_WERROR="${WERROR:-OFF}" >/dev/null
+BUILD_TYPE=${BUILD_TYPE:-Release}
+args=(-DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DRELPOS_SANITIZE="${SANITIZE:-}"
+      -DRELPOS_WERROR="${WERROR:-OFF}" -DRELPOS_BUILD_BENCH="${BENCH:-ON}")
+if [ -n "${OPT_FLAGS:-}" ]; then args+=(-DCMAKE_CXX_FLAGS_"${BUILD_TYPE^^}"="$OPT_FLAGS"); fi
+cmake -S . -B "$BUILD_DIR" "${args[@]}" >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)"

@@ -1,11 +1,11 @@
 #include "phc_runner.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace relpos::bench {
@@ -32,6 +32,30 @@ double timedShell(const std::string& command, int* status) {
   const auto t0 = std::chrono::steady_clock::now();
   *status = std::system(command.c_str());
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// " NAME :  RE  IM" exactly (a word, a colon, two numbers): the value of one unknown. Plain
+// stream parsing, not <regex>, whose GCC 12 headers warn (maybe-uninitialized) under -Werror.
+bool valueLine(const std::string& line, std::string* name, std::string* re, std::string* im) {
+  std::istringstream words(line);
+  std::string colon, rest;
+  if (!(words >> *name >> colon >> *re >> *im) || colon != ":" || (words >> rest)) return false;
+  for (char c : *name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+// "t :  RE  IM" lines set to 0: phc -p starts every path at its solution's t.
+std::string resetT(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line)) {
+    std::string name, re, im;
+    if (valueLine(line, &name, &re, &im) && name == "t")
+      line = "t :  0.00000000000000E+00   0.00000000000000E+00";
+    out += line + "\n";
+  }
+  return out;
 }
 
 // The last solution list of a PHC file: "THE SOLUTIONS :", "N DIM", then per solution the lines
@@ -62,7 +86,6 @@ void parseSolutions(const std::string& text, const std::vector<std::string>& var
     seen.assign(variables.size(), false);
     failed = false;
   };
-  const std::regex value(R"(^\s*(\w+) :\s+(\S+)\s+(\S+)\s*$)");
   while (std::getline(in, line)) {
     if (line.rfind("solution ", 0) == 0) flush();
     // A path's verdict is on its "solution N :" line and its "== err ... ==" line (the summary
@@ -71,12 +94,12 @@ void parseSolutions(const std::string& text, const std::vector<std::string>& var
     if (verdict && (line.find("failure") != std::string::npos ||
                     line.find("no solution") != std::string::npos))
       failed = true;
-    std::smatch m;
-    if (!std::regex_match(line, m, value)) continue;
+    std::string name, real, imag;
+    if (!valueLine(line, &name, &real, &imag)) continue;
     for (std::size_t i = 0; i < variables.size(); ++i)
-      if (m[1] == variables[i]) {
-        re[i] = std::strtod(m[2].str().c_str(), nullptr);
-        im[i] = std::strtod(m[3].str().c_str(), nullptr);
+      if (name == variables[i]) {
+        re[i] = std::strtod(real.c_str(), nullptr);
+        im[i] = std::strtod(imag.c_str(), nullptr);
         seen[i] = true;
       }
   }
@@ -130,10 +153,7 @@ std::string startSystem(const std::string& phc, const std::string& cache, Family
       return "";
     }
     // phc -p starts every path at its solution's t: the solved start's t = 1 becomes 0.
-    std::string text = readFile(cache_dir + "/" + name + ".b.phc");
-    text = std::regex_replace(text, std::regex(R"(\nt :\s+\S+\s+\S+)"),
-                              "\nt :  0.00000000000000E+00   0.00000000000000E+00");
-    writeFile(file, text);
+    writeFile(file, resetT(readFile(cache_dir + "/" + name + ".b.phc")));
   }
   PhcRun listed;
   parseSolutions(readFile(file), generic.variables, &listed);

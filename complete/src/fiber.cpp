@@ -32,7 +32,12 @@ bool before(const CertifiedRoot& a, const CertifiedRoot& b) {
 FiberResult solveFiber(const Family& f, const std::vector<double>& target,
                        const FiberOptions& options) {
   FiberResult result;
-  const StartSystem& start = startSystem(f);
+  const StartSystem* found = findStartSystem(f, options.compute_start_system);
+  if (!found) {
+    result.start_system_missing = true;
+    return result;
+  }
+  const StartSystem& start = *found;
   result.root_count = static_cast<int>(start.roots.size());
   const int np = f.parameterCount();
   if (static_cast<int>(target.size()) != np) return result;

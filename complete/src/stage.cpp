@@ -63,7 +63,19 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
 // computed in the process can undercount (a random problem whose known pose was missed while its
 // N roots were all found), so only a trace-tested N proves that every isolated root was found.
 bool traceTestedCount(const Family& family) {
-  return startSystem(family).check.find("+trace") != std::string::npos;
+  const StartSystem* start = findStartSystem(family, false);  // solveFiber's, when it had one
+  return start && start->check.find("+trace") != std::string::npos;
+}
+
+FiberOptions fiberOptions(const StageOptions& options) {
+  FiberOptions o;
+  o.compute_start_system = options.compute_start_systems;
+  return o;
+}
+
+std::string noStoredStartSystem(const Family& family) {
+  return "no stored start system for the constraint signature '" + family.signature() +
+         "' (computing one while solving is off)";
 }
 
 // Every root the fiber certified: the non-real ones must be proven non-real for the list to be
@@ -91,7 +103,8 @@ void collect(const FiberResult& fiber, bool trace_tested, Answer& a, Accept acce
 
 // One subproblem (an orientation for each "either" that changes the equations).
 bool solvePoseAlternative(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                          unsigned alternative, Answer& a, StageReport& report, std::string* why) {
+                          unsigned alternative, const StageOptions& options, Answer& a,
+                          StageReport& report, std::string* why) {
   PoseEncoding enc;
   FiberResult fiber;
   bool trace_tested = false;
@@ -100,7 +113,11 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
     PoseEncoding e;
     if (!encodePose(problem, chart, &e, why, alternative)) return false;
     const PoseFamily family(e.equations, static_cast<int>(e.target.size()));
-    FiberResult r = solveFiber(family, e.target);
+    FiberResult r = solveFiber(family, e.target, fiberOptions(options));
+    if (r.start_system_missing) {
+      *why = noStoredStartSystem(family);
+      return false;
+    }
     if (chart == 0)
       report.signature += (report.signature.empty() ? "" : " | ") + family.signature();
     if (chart == 0 || r.roots.size() > fiber.roots.size()) {
@@ -141,8 +158,8 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
 }
 
 // Every subproblem; the list is complete only if each is.
-bool solvePose(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
-               StageReport& report, std::string* why) {
+bool solvePose(const Problem& problem, const Registry& registry, const Tolerance& tol,
+               const StageOptions& options, Answer& a, StageReport& report, std::string* why) {
   PoseEncoding first;
   if (!encodePose(problem, 0, &first, why)) return false;
   if (first.alternatives > 3) {
@@ -151,7 +168,7 @@ bool solvePose(const Problem& problem, const Registry& registry, const Tolerance
     return false;
   }
   for (unsigned alternative = 0; alternative < (1u << first.alternatives); ++alternative)
-    if (!solvePoseAlternative(problem, registry, tol, alternative, a, report, why)) return false;
+    if (!solvePoseAlternative(problem, registry, tol, alternative, options, a, report, why)) return false;
   return true;
 }
 
@@ -180,13 +197,17 @@ bool lineBranch(const Registry& registry, const Tolerance& tol, const LineEncodi
   return true;
 }
 
-bool solveLine(const Problem& problem, const Registry& registry, const Tolerance& tol, Answer& a,
-               StageReport& report, std::string* why) {
+bool solveLine(const Problem& problem, const Registry& registry, const Tolerance& tol,
+               const StageOptions& options, Answer& a, StageReport& report, std::string* why) {
   LineEncoding enc;
   if (!encodeLine(problem, tol, &enc, why)) return false;
   const LineFamily family(enc.equations, static_cast<int>(enc.target.size()));
   report.signature = family.signature();
-  const FiberResult fiber = solveFiber(family, enc.target);
+  const FiberResult fiber = solveFiber(family, enc.target, fiberOptions(options));
+  if (fiber.start_system_missing) {
+    *why = noStoredStartSystem(family);
+    return false;
+  }
   report.root_count = fiber.root_count;
   report.roots_found = static_cast<int>(fiber.roots.size());
   const SourceMask sources = allSources(problem);
@@ -225,7 +246,7 @@ bool decline(Solution& solution, const std::string& why) {
 }  // namespace
 
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                   Solution& solution, StageReport* report) {
+                   Solution& solution, StageReport* report, const StageOptions& options) {
   StageReport local;
   StageReport& rep = report ? *report : local;
   rep = StageReport{};
@@ -238,8 +259,8 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
   Answer a;
   std::string why;
   const bool line = mobileFeaturesOnOneLine(problem, tol);
-  const bool encoded = line ? solveLine(problem, registry, tol, a, rep, &why)
-                            : solvePose(problem, registry, tol, a, rep, &why);
+  const bool encoded = line ? solveLine(problem, registry, tol, options, a, rep, &why)
+                            : solvePose(problem, registry, tol, options, a, rep, &why);
   if (!encoded) return decline(solution, why);
   rep.complete = a.proven;
   // All the family's isolated roots found proves no isolated pose is missing, not that there is

@@ -10,6 +10,7 @@
 #include "start_system.hpp"
 
 #include <map>
+#include <set>
 #include <memory>
 #include <mutex>
 
@@ -174,21 +175,28 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
 
 }  // namespace detail
 
-const StartSystem& startSystem(const Family& f) {
+const StartSystem* findStartSystem(const Family& f, bool compute) {
   // One computation per signature for the process; the lock is held while computing so two
   // threads asking for the same signature compute it once.
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<StartSystem>> cache;
+  static std::set<std::string> not_stored;  // looked up without computing: none stored
   std::lock_guard<std::mutex> lock(mutex);
-  auto it = cache.find(f.signature());
-  if (it == cache.end()) {
-    // The stored one first (deterministic: always preferred for its signature); a stored file
-    // that fails its check against f is ignored and the start system computed.
-    std::unique_ptr<StartSystem> s = detail::loadStoredStartSystem(f);
-    if (!s) s = detail::computeStartSystem(f, detail::kDefaultMaxBezout);
-    it = cache.emplace(f.signature(), std::move(s)).first;
+  const std::string signature = f.signature();
+  auto it = cache.find(signature);
+  if (it != cache.end()) return it->second.get();
+  if (!compute && not_stored.count(signature)) return nullptr;
+  // The stored one first (deterministic: always preferred for its signature); a stored file
+  // that fails its check against f is ignored and the start system computed.
+  std::unique_ptr<StartSystem> s = detail::loadStoredStartSystem(f);
+  if (!s && !compute) {
+    not_stored.insert(signature);
+    return nullptr;
   }
-  return *it->second;
+  if (!s) s = detail::computeStartSystem(f, detail::kDefaultMaxBezout);
+  return cache.emplace(signature, std::move(s)).first->second.get();
 }
+
+const StartSystem& startSystem(const Family& f) { return *findStartSystem(f, true); }
 
 }  // namespace relpos::complete

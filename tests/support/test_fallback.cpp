@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "relpos/builtins/builtins.hpp"
+#include "relpos/complete/register.hpp"
 #include "relpos/manifolds/separable.hpp"
 
 namespace relpos::test {
@@ -60,6 +61,19 @@ const Registry& rulesOnlyRegistry() {
   static const Registry registry = [] {
     Registry r;
     addRules(r);
+    r.freeze();
+    return r;
+  }();
+  return registry;
+}
+
+const Registry& sweepRegistry() {
+  static const Registry registry = [] {
+    Registry r;
+    addRules(r);
+    complete::StageOptions options;
+    options.compute_start_systems = false;
+    complete::registerStage(r, options);
     r.freeze();
     return r;
   }();

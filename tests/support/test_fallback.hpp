@@ -22,6 +22,11 @@ struct TestFallback {
 // The built-ins' rules alone (every constraint type, rule, manifold and matcher, no numeric
 // stage, whether or not registerBuiltins adds one), frozen: what "the rules' answer" means.
 const Registry& rulesOnlyRegistry();
+// The built-ins with the numeric stage limited to the stored start systems (StageOptions), frozen:
+// for the sweeps over thousands of random problems that test the rules and the solver, where each
+// new constraint signature would otherwise compute a start system for seconds. The stage itself
+// is swept with builtinRegistry() in tests/complete.
+const Registry& sweepRegistry();
 // Those with `stage` registered as the numeric stage (named "test-stage").
 Registry builtinsWithFallback(const TestFallback& stage);
 

@@ -23,6 +23,7 @@
 #include "result_checker.hpp"
 #include "seed_offset.hpp"
 #include "solve_helpers.hpp"
+#include "test_fallback.hpp"
 #include "spec_writer.hpp"
 
 namespace relpos::test {
@@ -57,7 +58,7 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
       const double slack = RelativeEvaluator(p, size).worst(known);
       ASSERT_LE(slack, f.known_slack(level)) << "generator: " << group << "\n" << spec;
 
-      const Solution s = solve(p, builtinRegistry());
+      const Solution s = solve(p, sweepRegistry());
       log.count(group);
       const std::string cause = std::string(toString(s.status)) + " [" + firedRules(s) + "]";
       const std::string details = "spec: " + spec + "\nknown pose: " + poseText(known) +

@@ -27,6 +27,7 @@
 #include "result_checker.hpp"
 #include "seed_offset.hpp"
 #include "solve_helpers.hpp"
+#include "test_fallback.hpp"
 #include "spec_writer.hpp"
 #include "test_config.hpp"
 
@@ -68,7 +69,7 @@ Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>&
                        const std::string& group, std::uint64_t seed, const std::string& context,
                        FailureLog& log, double reach = 0.0) {
   const Problem& p = spec.problem;
-  Solution s = solve(p, builtinRegistry());
+  Solution s = solve(p, sweepRegistry());
   log.count(group);
   if (s.status == Status::kUnhandled) log.unhandled(group);
   const std::string details = context + "\nspec: " + spec.text + "\nresult: " + verdict(s) +

@@ -15,6 +15,7 @@
 #include "local_dof.hpp"
 #include "random_problems.hpp"
 #include "solve_helpers.hpp"
+#include "test_fallback.hpp"
 
 namespace relpos::test {
 namespace {
@@ -25,7 +26,7 @@ struct Tally {
 
 void checkKnown(const KnownProblem& kp, std::uint64_t seed, Tally& tally) {
   ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9 + 100 * kp.noise) << "generator bug";
-  Solution s = solve(kp.problem, builtinRegistry());
+  Solution s = solve(kp.problem, sweepRegistry());
   ASSERT_NE(s.status, Status::kInconsistent)
       << "false inconsistent: " << s.message << "\nknown pose " << poseText(kp.X_WM_star);
   if (s.status == Status::kUnhandled) {

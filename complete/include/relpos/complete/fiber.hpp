@@ -42,6 +42,9 @@ struct StartSystem {
 // on first use (monodromy from f.seedMember, seeded by the signature, so the same on every run);
 // kept for the process; thread-safe.
 const StartSystem& startSystem(const Family& f);
+// The same, or nullptr when none is stored and `compute` is false (added for issue 15's stage
+// options: a solve that must not spend seconds computing a start system).
+const StartSystem* findStartSystem(const Family& f, bool compute);
 
 struct CertifiedRoot {
   Eigen::VectorXcd x;   // the root's approximation (box centre)
@@ -55,6 +58,9 @@ struct FiberOptions {
   // Threads tracking the paths of one call (added for issue 15's engine): 1 runs in the caller's
   // thread; the answer is the same for every value.
   int threads = 1;
+  // Compute the start system when none is stored (seconds to minutes, once per signature and
+  // process); false: a family without a stored one gets no roots and start_system_missing.
+  bool compute_start_system = true;
 };
 
 struct FiberResult {
@@ -62,6 +68,7 @@ struct FiberResult {
   int root_count = 0;                // the family's root count (paths tracked per attempt)
   bool complete = false;             // roots.size() == root_count: no isolated root is missing
   int attempts = 0;                  // attempts used
+  bool start_system_missing = false;  // none stored and options.compute_start_system false
 };
 
 // target: the real member's parameters (parameterCount()).

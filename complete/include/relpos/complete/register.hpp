@@ -1,10 +1,12 @@
 #pragma once
 // Registers the numeric stage (solveComplete, docs/spec.md §8) as the registry's fallback: what
 // the rules leave unhandled goes to it. registerBuiltins calls this.
+#include "relpos/complete/stage.hpp"
 #include "relpos/core/registry.hpp"
 
 namespace relpos::complete {
 
-void registerStage(Registry& registry);
+// options: how the stage may spend its time (stage.hpp); copied, the caller need not keep it.
+void registerStage(Registry& registry, const StageOptions& options = StageOptions());
 
 }  // namespace relpos::complete

@@ -29,6 +29,15 @@ struct StageReport {
   std::string signature;  // the family's
 };
 
+// How the stage may spend its time (added for issue 15's CI budget and for callers in a control
+// loop): computing a start system the repository does not store takes seconds to minutes, once
+// per constraint signature and process.
+struct StageOptions {
+  // false: a problem whose family has no stored start system is declined (solveComplete returns
+  // false, saying so) instead of computing one.
+  bool compute_start_systems = true;
+};
+
 // Applies when every constraint is a built-in type with an exact value that the encodings take
 // and they give as many equations as unknowns (6 for a pose; 4 for a line, when every mobile
 // feature lies on one line). Then, when some certified real root meets every constraint: solved
@@ -38,6 +47,7 @@ struct StageReport {
 // Otherwise false, with the reason in solution.message and nothing else of the solution changed
 // (never inconsistent: no real isolated root does not exclude a positive-dimensional set).
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                   Solution& solution, StageReport* report = nullptr);
+                   Solution& solution, StageReport* report = nullptr,
+                   const StageOptions& options = StageOptions());
 
 }  // namespace relpos::complete
