@@ -20,8 +20,8 @@ const StageOptions* kept(const StageOptions& options) {
 
 }  // namespace
 
-void registerStage(Registry& registry, const StageOptions& options) {
-  registry.setFallback({"complete", &answer, kept(options)});
+void registerStage(Registry& registry, const StageOptions& options, bool replace) {
+  registry.setFallback({"complete", &answer, kept(options)}, replace);
 }
 
 }  // namespace relpos::complete

@@ -10,13 +10,14 @@
 #include "start_system.hpp"
 
 #include <map>
-#include <set>
 #include <memory>
 #include <mutex>
+#include <set>
 
 #include "homotopy.hpp"
 #include "krawczyk.hpp"
 #include "random.hpp"
+#include "relpos/complete/encoding.hpp"
 #include "relpos/complete/fiber.hpp"
 #include "stored_start_systems.hpp"
 #include "total_degree.hpp"
@@ -198,5 +199,17 @@ const StartSystem* findStartSystem(const Family& f, bool compute) {
 }
 
 const StartSystem& startSystem(const Family& f) { return *findStartSystem(f, true); }
+
+int preloadStoredStartSystems() {
+  int loaded = 0;
+  for (const detail::EmbeddedText& e : detail::embeddedStartSystems()) {
+    detail::StoredStartSystem s;
+    std::string why;
+    if (!detail::parseStoredStartSystem(e.text, &s, &why)) continue;
+    const std::unique_ptr<Family> f = familyOfSignature(s.signature);
+    if (f && findStartSystem(*f, false)) ++loaded;
+  }
+  return loaded;
+}
 
 }  // namespace relpos::complete

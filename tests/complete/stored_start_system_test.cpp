@@ -87,6 +87,36 @@ TEST(StoredStartSystems, EveryBenchmarkFamilyHasOne) {
   }
 }
 
+// A stored signature spells out its family: familyOfSignature rebuilds the family the source
+// spec encodes to (same signature, same shape), and refuses texts that are not signatures.
+TEST(StoredStartSystems, EverySignatureRebuildsItsFamily) {
+  for (const auto& e : detail::embeddedStartSystems()) {
+    const detail::StoredStartSystem s = parsed(e);
+    const auto rebuilt = familyOfSignature(s.signature);
+    const auto encoded = familyOfSource(s.source);
+    ASSERT_TRUE(rebuilt) << e.name;
+    ASSERT_TRUE(encoded) << e.name;
+    EXPECT_EQ(rebuilt->signature(), s.signature);
+    EXPECT_EQ(rebuilt->parameterCount(), encoded->parameterCount());
+    EXPECT_EQ(rebuilt->shape().terms.size(), encoded->shape().terms.size());
+    // Cut short, with a kind renamed, a count changed or a field added: not a signature.
+    EXPECT_FALSE(familyOfSignature(s.signature.substr(0, s.signature.size() - 1))) << e.name;
+    std::string renamed = s.signature;
+    renamed.replace(renamed.find(';') + 1, 1, "X");
+    EXPECT_FALSE(familyOfSignature(renamed)) << e.name;
+    EXPECT_FALSE(familyOfSignature(s.signature + ";study(-1,-1,-1,-1)")) << e.name;
+  }
+  for (const char* text : {"", "pose", "pose/", "pose/x", "line/3;unit(-1,-1)", "plane/4;x(1)",
+                           "pose/4;chart(-1,-1,-1,0)"})
+    EXPECT_FALSE(familyOfSignature(text)) << text;
+}
+
+// preloadStoredStartSystems loads each stored file (every one fits its family).
+TEST(StoredStartSystems, PreloadLoadsEveryFile) {
+  EXPECT_EQ(preloadStoredStartSystems(),
+            static_cast<int>(detail::embeddedStartSystems().size()));
+}
+
 class EachStored : public ::testing::TestWithParam<int> {};
 
 // The file names its family (the source spec re-encoded today gives the stored signature), its

@@ -17,6 +17,7 @@
 // parameters; every value parameter (a squared distance, an offset, a cosine) appears in one
 // equation only and affinely, which is what seedMember solves for.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -96,5 +97,10 @@ class LineFamily final : public PolyFamilyOf<LineFamily> {
   std::vector<LineEquation> equations_;
   std::vector<int> value_param_;
 };
+
+// The family a signature spells out (PoseFamily::signature(), LineFamily::signature()): the same
+// equations and parameter count, so the same signature. nullptr when the text is not one
+// (added for issue 15: the stored start systems are loaded by signature, before any problem).
+std::unique_ptr<Family> familyOfSignature(const std::string& signature);
 
 }  // namespace relpos::complete

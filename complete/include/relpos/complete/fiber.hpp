@@ -45,6 +45,10 @@ const StartSystem& startSystem(const Family& f);
 // The same, or nullptr when none is stored and `compute` is false (added for issue 15's stage
 // options: a solve that must not spend seconds computing a start system).
 const StartSystem* findStartSystem(const Family& f, bool compute);
+// Loads every stored start system now (each checked against its family, as on first use), so
+// that the first solve of a family pays no loading: for a control loop's start-up, and for
+// tools that time each solve. Returns how many were loaded.
+int preloadStoredStartSystems();
 
 struct CertifiedRoot {
   Eigen::VectorXcd x;   // the root's approximation (box centre)

@@ -7,6 +7,9 @@
 namespace relpos::complete {
 
 // options: how the stage may spend its time (stage.hpp); copied, the caller need not keep it.
-void registerStage(Registry& registry, const StageOptions& options = StageOptions());
+// replace: take the place of a numeric stage already registered (e.g. registerBuiltins's, to
+// change its options) instead of throwing std::invalid_argument.
+void registerStage(Registry& registry, const StageOptions& options = StageOptions(),
+                   bool replace = false);
 
 }  // namespace relpos::complete
