@@ -43,7 +43,7 @@ std::unique_ptr<Family> poseFamily(int parameters, const std::vector<std::string
     if (!splitItem(item, &name, v, 4) ||
         !kindNamed(name,
                    {K::kChart, K::kStudy, K::kPointPoint, K::kPointPlane, K::kPlanePoint,
-                    K::kPointLine, K::kLinePoint, K::kDirection},
+                    K::kPointLine, K::kLinePoint, K::kDirection, K::kNorm},
                    &q.kind))
       return nullptr;
     q.fixed = v[0], q.mobile = v[1], q.line = v[2], q.value = v[3];

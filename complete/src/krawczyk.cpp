@@ -4,17 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rounded_interval.hpp"
+
 namespace relpos::complete::detail {
 namespace {
-
-namespace bi = boost::numeric;
-namespace il = boost::numeric::interval_lib;
-
-// Rounding: every operation assumes the FPU rounds upward (and gets lower bounds by negation);
-// RoundUp sets that for its scope and restores the caller's mode.
-using FI = bi::interval<double, il::policies<il::save_state_nothing<il::rounded_arith_opp<double>>,
-                                             il::checking_base<double>>>;
-using RoundUp = il::save_state<il::rounded_arith_opp<double>>;
 
 struct ComplexBox {
   FI re, im;
@@ -30,8 +23,6 @@ ComplexBox operator*(const ComplexBox& a, const ComplexBox& b) {
 }
 ComplexBox operator*(const FI& a, const ComplexBox& b) { return {a * b.re, a * b.im}; }
 ComplexBox operator*(const ComplexBox& a, double b) { return {a.re * b, a.im * b}; }
-
-double mag(const FI& a) { return std::max(-a.lower(), a.upper()); }
 
 bool finiteMatrix(const CMat& m) {
   for (Eigen::Index i = 0; i < m.size(); ++i)

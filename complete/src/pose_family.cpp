@@ -32,6 +32,8 @@ Poly<S> poseEquation(const PoseEquation& q, const S* p) {
     }
     case K::kStudy:
       return dot4(e, g);
+    case K::kNorm:
+      return ee - Poly<S>::constant(S(1.0));
     case K::kPointPoint: {
       const Quat<S> v = e * pureQuat(p + q.mobile) - pureQuat(p + q.fixed) * e + two * g;
       return dot4(v, v) - p[q.value] * ee;
@@ -82,8 +84,9 @@ std::vector<int> checkedValueParams(const std::vector<PoseEquation>& eqs, int n)
       use.value(-1);
       continue;
     }
-    use.value(q.kind == K::kStudy ? -1 : q.value);
-    if (q.kind == K::kStudy) continue;
+    const bool structural = q.kind == K::kStudy || q.kind == K::kNorm;
+    use.value(structural ? -1 : q.value);
+    if (structural) continue;
     use.coordinates(q.fixed, 3);
     use.coordinates(q.mobile, 3);
     if (q.kind == K::kPointLine || q.kind == K::kLinePoint) use.coordinates(q.line, 3);
@@ -112,6 +115,8 @@ const char* toString(PoseEquationKind k) {
       return "Lp";
     case K::kDirection:
       return "dir";
+    case K::kNorm:
+      return "norm";
   }
   return "?";
 }
@@ -140,9 +145,13 @@ void PoseFamily::seedMember(std::uint64_t seed, Complex* params, Complex* root) 
   for (Complex& z : e) z = randomComplex(rng);
   for (Complex& z : g) z = randomComplex(rng);
   for (const PoseEquation& q : equations_) {
-    if (q.kind != K::kChart) continue;
     Complex ce = 0.0;
-    for (int i = 0; i < 4; ++i) ce += params[q.value + i] * e[i];
+    if (q.kind == K::kChart)
+      for (int i = 0; i < 4; ++i) ce += params[q.value + i] * e[i];
+    else if (q.kind == K::kNorm)
+      ce = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+    else
+      continue;
     for (Complex& z : e) z /= ce;
   }
   Complex eg = 0.0, ee = 0.0;

@@ -7,6 +7,7 @@
 
 #include "relpos/complete/fiber.hpp"
 #include "relpos/complete/problem_encoding.hpp"
+#include "real_root_proof.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/manifolds/rotation/fixed.hpp"
 #include "relpos/manifolds/separable.hpp"
@@ -22,8 +23,13 @@ constexpr double kCheckTolerances = 10.0;
 struct Answer {
   std::vector<Branch> branches;
   std::vector<StageReport::Certificate> certificates;
-  bool proven = true;  // no root lost, none undecided
+  bool proven = true;  // no isolated root lost, none undecided (isolated_complete)
   std::string doubt;   // why not, when not
+  // Every real solution is a branch (complete): the interval proof of each subproblem, and no
+  // root of the answer in doubt.
+  bool real_proven = true;
+  std::string real_doubt;
+  int proof_boxes = 0;
 };
 
 SourceMask allSources(const Problem& p) {
@@ -31,9 +37,33 @@ SourceMask allSources(const Problem& p) {
   return n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
 }
 
+// Doubts about the count of isolated roots (the interval proof may still show every real one).
 void doubt(Answer& a, std::string why) {
   if (a.proven) a.doubt = std::move(why);
   a.proven = false;
+}
+
+// Doubts about the real solutions (and so the isolated ones too).
+void realDoubt(Answer& a, const std::string& why) {
+  if (a.real_proven) a.real_doubt = why;
+  a.real_proven = false;
+}
+void doubtBoth(Answer& a, const std::string& why) {
+  doubt(a, why);
+  realDoubt(a, why);
+}
+
+// The interval proof that every real root of the subproblem's encoding is a root found, within
+// `boxes` (0: not tried).
+template <typename Encoding>
+void proveRealRoots(const Encoding& enc, const FiberResult& fiber, int boxes, Answer& a) {
+  if (!a.real_proven) return;  // already in doubt: the proof could not change that
+  if (boxes <= 0) return realDoubt(a, "the interval proof was not tried");
+  detail::ExclusionOptions options;
+  options.max_boxes = boxes;
+  const detail::ExclusionResult proof = detail::proveRootsKnown(enc, fiber.roots, options);
+  a.proof_boxes += proof.boxes;
+  if (!proof.proven) realDoubt(a, proof.why);
 }
 
 // Whether a root's box reaches the real space (|Im x_i| ≤ radius everywhere): its root might be
@@ -135,15 +165,15 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
     for (int i = 0; i < 8; ++i) x[i] = r.x[i].real();
     PoseEnclosure pe;
     if (!enclosePose(x, r.radius, enc.frames, &pe))
-      return doubt(a, "a real root's box holds no pose (e = 0)");
+      return doubtBoth(a, "a real root's box holds no pose (e = 0)");
     for (const SignCheck& s : enc.signs) {
       const double along = s.fixed.dot(pe.pose.linear() * s.mobile);
-      if (std::abs(along) < 0.5) return doubt(a, "a parallelism's orientation undecided");
+      if (std::abs(along) < 0.5) return doubtBoth(a, "a parallelism's orientation undecided");
       if (s.sign * along < 0.0) return;  // a root of the equations, the other orientation
     }
     const double v = worstViolation(problem, registry, tol, pe.pose);
     if (!(v <= kCheckTolerances))
-      return doubt(
+      return doubtBoth(
           a, "a certified real root breaks a constraint by " + std::to_string(v) + " tolerances");
     Branch b;
     b.manifold.emplace<manifolds::SeparableManifold>(
@@ -154,6 +184,9 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
     a.branches.push_back(std::move(b));
     a.certificates.push_back({pe.radius, pe.angle});
   });
+  // A pose's proof only where it can pay: no real pose found (docs/spec.md §8.4).
+  const bool none = a.branches.empty() && report.real_roots == 0;
+  proveRealRoots(enc, fiber, none ? options.pose_proof_boxes : 0, a);
   return true;
 }
 
@@ -217,24 +250,25 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
     for (int i = 0; i < 6; ++i) x[i] = r.x[i].real();
     LineEnclosure le;
     if (!encloseLine(x, r.radius, enc.frames, &le))
-      return doubt(a, "a real root's box holds no direction");
+      return doubtBoth(a, "a real root's box holds no direction");
     for (const SignCheck& s : enc.signs) {
       const double along = s.fixed.dot(s.mobile.dot(enc.mobile_direction) * le.direction);
-      if (std::abs(along) < 0.5) return doubt(a, "a parallelism's orientation undecided");
+      if (std::abs(along) < 0.5) return doubtBoth(a, "a parallelism's orientation undecided");
       if (s.sign * along < 0.0) return;
     }
     Branch b;
     if (!lineBranch(registry, tol, enc, le, &b))
-      return doubt(a, "the rules did not solve the line's coincidence");
+      return doubtBoth(a, "the rules did not solve the line's coincidence");
     const Manifold& m = *b.manifold;
     const double v = worstViolation(problem, registry, tol, m.pose(referenceParams(m)));
     if (!(v <= kCheckTolerances))
-      return doubt(
+      return doubtBoth(
           a, "a certified real line breaks a constraint by " + std::to_string(v) + " tolerances");
     b.sources = sources;
     a.branches.push_back(std::move(b));
     a.certificates.push_back({le.radius, le.angle});
   });
+  proveRealRoots(enc, fiber, options.line_proof_boxes, a);
   return true;
 }
 
@@ -263,26 +297,44 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
                             : solvePose(problem, registry, tol, options, a, rep, &why);
   if (!encoded) return decline(solution, why);
   rep.complete = a.proven;
-  // All the family's isolated roots found proves no isolated pose is missing, not that there is
-  // no positive-dimensional set of poses: a special member (features on common axes, integer
-  // geometry) may have one besides, which no path reaches (measured: random triples on grid
-  // geometry, a 1-DOF set next to 12 complex roots). Until something excludes such sets
-  // (interval exclusion of the bounded domain), the stage claims neither `inconsistent` nor
-  // `complete`: its branches are each proven, its list is not.
-  if (a.branches.empty())
-    return decline(solution,
-                   a.proven ? "no isolated real pose among all " + std::to_string(rep.root_count) +
-                                  " certified solutions of the polynomial encoding (a "
-                                  "positive-dimensional set of poses is not excluded)"
-                            : "no solution among the roots found, and not proven: " + a.doubt);
+  rep.real_complete = a.real_proven;
+  rep.real_doubt = a.real_doubt;
+  rep.proof_boxes = a.proof_boxes;
+  // Every isolated root found proves no isolated pose missing, not that there is no
+  // positive-dimensional set of poses besides, which no path reaches (a special member: features
+  // on common axes, integer geometry; measured: random triples on grid geometry, a 1-DOF set next
+  // to 12 complex roots). The interval proof over the bounded domain excludes those: with it,
+  // the list is complete, and an empty list is a proof of inconsistency.
+  if (a.branches.empty()) {
+    if (a.real_proven) {
+      solution.branches.clear();
+      solution.status = Status::kInconsistent;
+      solution.complete = solution.isolated_complete = true;
+      solution.conflicts.clear();  // the solver names every constraint
+      solution.message = "no pose satisfies the constraints: none of the " +
+                         std::to_string(rep.roots_found) +
+                         " certified solutions of their polynomial encoding is a real pose, and "
+                         "an interval search of every pose in reach (" +
+                         std::to_string(a.proof_boxes) + " boxes) finds no other";
+      return true;
+    }
+    return decline(solution, a.proven ? "no isolated real pose among all " +
+                                            std::to_string(rep.root_count) +
+                                            " certified solutions of the polynomial encoding, "
+                                            "and no proof that no other pose exists: " +
+                                            a.real_doubt
+                                      : "no solution among the roots found, and not proven: " +
+                                            a.doubt);
+  }
   solution.branches = std::move(a.branches);
   for (std::size_t i = 0; i < solution.branches.size(); ++i) {
     solution.branches[i].exact = false;
     solution.branches[i].certified = {a.certificates[i].radius, a.certificates[i].angle};
     solution.branches[i].origin = nullptr;
   }
-  solution.complete = false;              // see above
-  solution.isolated_complete = a.proven;  // every isolated root certified (and every "either")
+  solution.complete = a.real_proven;
+  // Every isolated root certified (and every "either"), or every real one listed.
+  solution.isolated_complete = a.proven || a.real_proven;
   rep.certificates = std::move(a.certificates);
   solution.status = Status::kSolved;
   solution.conflicts.clear();

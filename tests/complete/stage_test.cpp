@@ -111,6 +111,10 @@ TEST(Stage, FourSpheresGiveTwelveLinesEachBothWays) {
   EXPECT_EQ(r.root_count, 24);
   EXPECT_EQ(r.roots_found, r.root_count);
   EXPECT_EQ(r.real_roots % 2, 0);
+  // Every line proven listed: the interval search found no real line but these.
+  EXPECT_TRUE(r.real_complete) << r.real_doubt;
+  EXPECT_TRUE(s.complete);
+  EXPECT_GT(r.proof_boxes, 0);
   bool found = false;
   for (const Branch& b : s.branches) {
     EXPECT_EQ(b.manifold->dof(), 2);  // the spin about the line and the slide along it
@@ -180,24 +184,83 @@ TEST(Stage, CylinderInACorner) {
   }
 }
 
-// No pose: every isolated root found, none real; the stage still declines (a positive-
-// dimensional set of poses is not excluded), never claiming inconsistent.
-TEST(Stage, NoIsolatedPoseIsNotClaimedInconsistent) {
+// Six legs of 0.1 between fixed points 10 apart and mobile ones 1 apart: no pose. Every isolated
+// root is found and none is real; the legs alone bound the translation to boxes that do not
+// meet: proven inconsistent. Without the proof (a budget of one box), the stage declines.
+Problem legsTooShort() {
   std::mt19937_64 rng(35);
   Problem p;
-  // Fixed points 10 apart, mobile ones 1 apart, legs 0.1 long: no pose.
   for (int i = 0; i < 6; ++i) {
     p.addFixedFeature("A" + std::to_string(i), Feature::makePoint(10.0 * randomVector(rng)));
     p.addMobileFeature("B" + std::to_string(i), Feature::makePoint(randomVector(rng)));
     p.addConstraint("distance", "A" + std::to_string(i), "B" + std::to_string(i), 0.1);
   }
+  return p;
+}
+
+TEST(Stage, NoPoseIsProvenInconsistent) {
+  const Problem p = legsTooShort();
   Solution s;
   StageReport r;
-  EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r));
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(s.status, Status::kInconsistent);
+  EXPECT_TRUE(s.complete);
   EXPECT_EQ(r.roots_found, r.root_count);
   EXPECT_EQ(r.real_roots, 0);
-  EXPECT_NE(s.message.find("not excluded"), std::string::npos) << s.message;
   EXPECT_TRUE(s.branches.empty());
+  EXPECT_NE(s.message.find("no pose satisfies"), std::string::npos) << s.message;
+  // Through solve(): inconsistent too (here the rules see it first, in two of the legs).
+  EXPECT_EQ(solve(p, registryWithStage()).status, Status::kInconsistent);
+}
+
+TEST(Stage, NoPoseWithoutAProofIsNotClaimedInconsistent) {
+  const Problem p = legsTooShort();
+  StageOptions options;
+  options.pose_proof_boxes = 0;
+  Solution s;
+  StageReport r;
+  EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r, options));
+  EXPECT_EQ(r.real_roots, 0);
+  EXPECT_NE(s.message.find("no proof"), std::string::npos) << s.message;
+  EXPECT_TRUE(s.branches.empty());
+}
+
+// Lines within 0.1 of four points about 2.8 apart: none. Proven by the search over directions.
+TEST(Stage, NoLineIsProvenInconsistent) {
+  Problem p;
+  p.addMobileFeature("l", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitZ()));
+  const Vector3d c[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (int i = 0; i < 4; ++i) {
+    p.addFixedFeature("c" + std::to_string(i), Feature::makePoint(c[i]));
+    p.addConstraint("distance", "c" + std::to_string(i), "l", 0.1);
+  }
+  Solution s;
+  StageReport r;
+  ASSERT_TRUE(solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r)) << s.message;
+  EXPECT_EQ(s.status, Status::kInconsistent);
+  EXPECT_EQ(r.real_roots, 0);
+  EXPECT_GT(r.proof_boxes, 0);
+}
+
+// Four points on one axis, a line at distance 1 from each: every line parallel to the axis at
+// distance 1 (a cylinder's rulings), a curve of lines that no count of isolated roots sees.
+// Never complete, never inconsistent.
+TEST(Stage, ACurveOfLinesIsNeverComplete) {
+  Problem p;
+  p.addMobileFeature("l", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitZ()));
+  for (int i = 0; i < 4; ++i) {
+    p.addFixedFeature("c" + std::to_string(i), Feature::makePoint(Vector3d(0, 0, 0.7 * i)));
+    p.addConstraint("distance", "c" + std::to_string(i), "l", 1.0);
+  }
+  Solution s;
+  StageReport r;
+  solveComplete(p, builtinRegistry(), toleranceOf(p), s, &r);
+  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+  EXPECT_FALSE(s.complete);
+  EXPECT_FALSE(r.real_complete);
+  const Solution t = solve(p, registryWithStage());
+  EXPECT_NE(t.status, Status::kInconsistent) << t.message;
+  EXPECT_FALSE(t.complete);
 }
 
 TEST(Stage, AScaledAndMovedCopyGivesTheSamePosesMapped) {

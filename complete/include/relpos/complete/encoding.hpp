@@ -37,6 +37,9 @@ enum class PoseEquationKind : std::uint8_t {
   kPointLine,  // (v·v)(e·e)|u|² − (u·vec(v ẽ))² − D |u|² (e·e)²   mobile b, fixed a, line u
   kLinePoint,  // (v·v)(e·e)|m|² − (m·vec(ẽ v))² − D |m|² (e·e)²   fixed a, mobile b, line m
   kDirection,  // u·vec(e m ẽ) − κ e·e                        fixed u, mobile m, value κ
+  // e·e − 1 (added for issue 15's completeness proof): in place of the chart, the real system
+  // whose real roots are exactly the poses (each twice, ±(e, g)), on a bounded domain.
+  kNorm,
 };
 const char* toString(PoseEquationKind k);
 

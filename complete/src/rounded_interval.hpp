@@ -1,0 +1,23 @@
+#pragma once
+// The interval type of the proofs (krawczyk.cpp, exclusion.cpp): Boost.Interval with every
+// operation assuming the FPU rounds upward (lower bounds by negation), so that one RoundUp scope
+// around a whole test sets the mode once instead of at every operation. Units that include this
+// are compiled with -frounding-math and never with -ffast-math.
+#include <algorithm>
+#include <boost/numeric/interval.hpp>
+
+namespace relpos::complete::detail {
+
+using FI = boost::numeric::interval<
+    double, boost::numeric::interval_lib::policies<
+                boost::numeric::interval_lib::save_state_nothing<
+                    boost::numeric::interval_lib::rounded_arith_opp<double>>,
+                boost::numeric::interval_lib::checking_base<double>>>;
+// Upward rounding for its scope; the caller's mode restored after.
+using RoundUp = boost::numeric::interval_lib::save_state<
+    boost::numeric::interval_lib::rounded_arith_opp<double>>;
+
+// max |x| over the interval.
+inline double mag(const FI& a) { return std::max(-a.lower(), a.upper()); }
+
+}  // namespace relpos::complete::detail
