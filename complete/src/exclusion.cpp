@@ -44,14 +44,14 @@ class Krawczyk {
     }
     RMat mid(n_, n_);
     for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) mid(i, j) = median(J_[i * n_ + j]);
+      for (int j = 0; j < n_; ++j) mid(i, j) = midpoint(J_[i * n_ + j]);
     if (!mid.allFinite()) return Verdict::kUndecided;
     const RMat Y = Eigen::PartialPivLU<RMat>(mid).inverse();
     if (!Y.allFinite()) return Verdict::kUndecided;
     FI c[kMaxVariables], fc[kMaxVariables];
     double r[kMaxVariables];
     for (int i = 0; i < n_; ++i) {
-      const double m = median(X.x[i]);
+      const double m = midpoint(X.x[i]);
       c[i] = FI(m);
       r[i] = std::max(X.x[i].upper() - m, m - X.x[i].lower());  // upward: bounds the reach
     }
@@ -84,6 +84,13 @@ class Krawczyk {
   int n_;
   std::vector<FI> coeffs_, values_, f_, J_;
 };
+
+// [√lo, √hi] under the caller's upward rounding: std::sqrt rounds up, so the double below it
+// is a lower bound. (Boost's sqrt switches the rounding mode twice per call.)
+FI sqrtUp(double lo, double hi) {
+  const double low = std::sqrt(lo);
+  return FI(low > 0.0 ? std::nextafter(low, 0.0) : 0.0, std::sqrt(hi));
+}
 
 // One term c · x_vars[0] ⋯ x_vars[degree−1] (variables sorted).
 struct Term {
@@ -142,7 +149,7 @@ class Contractor {
 
   // Contracts X by every contractor until they stop paying; false when X holds no root.
   bool contract(Box& X) {
-    for (int round = 0; round < 4; ++round) {
+    for (int round = 0; round < 2; ++round) {
       double before[kMaxVariables];
       for (int i = 0; i < n_; ++i) before[i] = width(X.x[i]);
       if (!project(X) || !gaussSeidel(X)) return false;
@@ -180,7 +187,7 @@ class Contractor {
           continue;
         }
         if (rhs.upper() < 0.0) return false;
-        const FI root = sqrt(FI(std::max(rhs.lower(), 0.0), rhs.upper()));
+        const FI root = sqrtUp(std::max(rhs.lower(), 0.0), rhs.upper());
         const FI neg = -root;
         const bool p = overlap(x, root), q = overlap(x, neg);
         if (!p && !q) return false;
@@ -204,7 +211,7 @@ class Contractor {
       for (const Term& t : rows_[k].rest) b_[k] = b_[k] + t.c * monomialValue(t, X.x);
       for (const auto& [j, t] : rows_[k].linear)
         A[k * m + j] = A[k * m + j] + t.c * monomialValue(t, X.x);
-      for (int j = 0; j < m; ++j) Am(k, j) = median(A[k * m + j]);
+      for (int j = 0; j < m; ++j) Am(k, j) = midpoint(A[k * m + j]);
     }
     if (!Am.allFinite()) return true;
     // Y ≈ pseudo-inverse of mid A: Y A ≈ I.
@@ -247,7 +254,7 @@ class Contractor {
         if (d < 2) continue;
         linear = false;
         if (d != 2 || t.degree != 2) pure = false;
-        q[keyOf(t)] = median(t.c);
+        q[keyOf(t)] = midpoint(t.c);
       }
       if (linear)
         addRow(e);
@@ -353,7 +360,7 @@ bool meets(const Box& a, const Box& b, int n) {
 bool uniquenessBox(Krawczyk& k, const Box& known, const Box& domain, int n, Box* out) {
   double centre[kMaxVariables], reach = 0.0, span = 0.0;
   for (int i = 0; i < n; ++i) {
-    centre[i] = median(known.x[i]);
+    centre[i] = midpoint(known.x[i]);
     reach = std::max(reach, width(known.x[i]));
     span = std::max(span, width(domain.x[i]));
   }
@@ -377,6 +384,7 @@ bool uniquenessBox(Krawczyk& k, const Box& known, const Box& domain, int n, Box*
 ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* coefficients,
                                    const RealBox& domain, const std::vector<RealBox>& known,
                                    const std::vector<bool>& secondary,
+                                   const std::vector<int>& negated,
                                    const ExclusionOptions& options) {
   ExclusionResult result;
   const int n = shape.variables;
@@ -402,9 +410,31 @@ ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* co
     result.why = std::move(why);
     return result;
   };
+  // The symmetry's image of each known root holds a root: it must be a known one, the one of a
+  // uniqueness box holding the image.
+  for (const Box& r : roots) {
+    if (negated.empty()) break;
+    Box image = r;
+    for (int v : negated) image.x[v] = -r.x[v];
+    bool known_image = false;
+    for (const Box& u : unique) known_image = known_image || contains(u, image, n);
+    if (!known_image) return fail("the mirror image of a root found is not among them");
+  }
   auto inUniquenessBox = [&](const Box& X) {
     for (const Box& u : unique)
       if (contains(u, X, n)) return true;
+    return false;
+  };
+  // A box that meets a uniqueness box without lying in it: one root in their hull (Krawczyk)
+  // is the known one, so the box holds no other. Saves refining the boxes along the uniqueness
+  // box's faces, where most of the search's boxes would otherwise go.
+  auto nearKnownRoot = [&](const Box& X) {
+    for (const Box& u : unique) {
+      if (!meets(u, X, n)) continue;
+      Box h;
+      for (int i = 0; i < n; ++i) h.x[i] = hull(u.x[i], X.x[i]);
+      return krawczyk.test(h) == Verdict::kOneRoot;
+    }
     return false;
   };
 
@@ -415,7 +445,8 @@ ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* co
     if (++result.boxes > options.max_boxes)
       return fail("the interval proof gave up after " + std::to_string(options.max_boxes) +
                   " boxes");
-    if (inUniquenessBox(X) || !contractor.contract(X) || inUniquenessBox(X)) continue;
+    if (inUniquenessBox(X) || !contractor.contract(X) || inUniquenessBox(X) || nearKnownRoot(X))
+      continue;
     // Krawczyk once the box is small enough for its linearisation to decide.
     bool settled = false;
     double primary_width = 0.0;
@@ -463,7 +494,7 @@ ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* co
                 : split_primary;
     if (!(widest > options.min_width))
       return fail("an undecided box too narrow to split (a singular root or a set of roots)");
-    const double m = median(X.x[split]);
+    const double m = midpoint(X.x[split]);
     Box lower = X, upper = X;
     lower.x[split] = FI(X.x[split].lower(), m);
     upper.x[split] = FI(m, X.x[split].upper());

@@ -45,9 +45,13 @@ struct ExclusionResult {
 // coefficients: enclosures of the member's coefficients (shape's term order). known: each an
 // enclosure of one real root (proven to exist there, e.g. a certified box). secondary: per
 // variable, whether it is solved for rather than branched on first (may be empty: none).
+// negated: variables whose negation maps every root of every member to a root (a symmetry of
+// the system; empty: none). With one, the domain may be half of the space (the other half its
+// image), and the proof also requires the image of every known root to be a known root.
 ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* coefficients,
                                    const RealBox& domain, const std::vector<RealBox>& known,
                                    const std::vector<bool>& secondary,
+                                   const std::vector<int>& negated = {},
                                    const ExclusionOptions& options = ExclusionOptions());
 
 }  // namespace relpos::complete::detail

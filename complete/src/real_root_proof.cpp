@@ -97,14 +97,15 @@ ExclusionResult unboxed(Bound b, const std::string& what) {
 // others (a rotation, a direction).
 ExclusionResult prove(const Family& family, const std::vector<double>& target,
                       const RealBox& domain, const std::vector<RealBox>& known,
-                      int first_secondary, const ExclusionOptions& options) {
+                      int first_secondary, const std::vector<int>& negated,
+                      const ExclusionOptions& options) {
   const std::vector<Interval> params = parameterEnclosures(target);
   std::vector<Interval> coefficients(family.shape().terms.size());
   family.coefficients(params.data(), coefficients.data());
   std::vector<bool> secondary(family.shape().variables, false);
   for (std::size_t i = first_secondary; i < secondary.size(); ++i) secondary[i] = true;
   return excludeUnknownRoots(family.shape(), coefficients.data(), domain, known, secondary,
-                             options);
+                             negated, options);
 }
 
 // The slabs that bound the translation of a pose, from the equations that bound it (at e·e = 1:
@@ -174,7 +175,7 @@ ExclusionResult proveRootsKnown(const PoseEncoding& enc, const std::vector<Certi
   for (PoseEquation& q : eqs)
     if (q.kind == K::kChart) q = {K::kNorm, -1, -1, -1, -1};
   const PoseFamily real(eqs, static_cast<int>(enc.target.size()));
-  return prove(real, enc.target, domain, known, 4, options);
+  return prove(real, enc.target, domain, known, 4, {}, options);
 }
 
 ExclusionResult proveRootsKnown(const LineEncoding& enc, const std::vector<CertifiedRoot>& roots,
@@ -192,11 +193,16 @@ ExclusionResult proveRootsKnown(const LineEncoding& enc, const std::vector<Certi
   Vector3d lo, hi;
   const Bound bound = boundingBox(slabs, &lo, &hi);
   if (bound != Bound::kBox) return unboxed(bound, "line");
+  // (w, q) ↦ (−w, q) maps roots to roots when no equation tells the two directions apart (no
+  // angle but right angles): half the directions, w₀ ≥ 0, then suffice.
+  bool symmetric = true;
+  for (const LineEquation& q : enc.equations)
+    symmetric = symmetric && (q.kind != K::kDirection || p[q.value] == 0.0);
   RealBox domain;
   domain.lo.resize(6);
   domain.hi.resize(6);
   for (int i = 0; i < 3; ++i) {
-    domain.lo[i] = -1.0 - kMargin;
+    domain.lo[i] = i == 0 && symmetric ? -kMargin : -1.0 - kMargin;
     domain.hi[i] = 1.0 + kMargin;
     domain.lo[3 + i] = lo[i];
     domain.hi[3 + i] = hi[i];
@@ -209,7 +215,9 @@ ExclusionResult proveRootsKnown(const LineEncoding& enc, const std::vector<Certi
     known.push_back(boxOf(x, 6));
   }
   const LineFamily family(enc.equations, static_cast<int>(p.size()));
-  return prove(family, p, domain, known, 3, options);
+  std::vector<int> negated;
+  if (symmetric) negated = {0, 1, 2};
+  return prove(family, p, domain, known, 3, negated, options);
 }
 
 }  // namespace relpos::complete::detail

@@ -17,6 +17,10 @@ using FI = boost::numeric::interval<
 using RoundUp = boost::numeric::interval_lib::save_state<
     boost::numeric::interval_lib::rounded_arith_opp<double>>;
 
+// A point of the interval (its midpoint up to rounding) without a change of rounding mode, as
+// Boost's median makes twice: halves are exact and their upward-rounded sum stays ≤ upper().
+inline double midpoint(const FI& a) { return 0.5 * a.lower() + 0.5 * a.upper(); }
+
 // max |x| over the interval.
 inline double mag(const FI& a) { return std::max(-a.lower(), a.upper()); }
 

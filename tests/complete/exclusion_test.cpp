@@ -103,7 +103,7 @@ TEST(Exclusion, ACurveOfRootsIsNeverProven) {
   ExclusionOptions o;
   o.max_boxes = 20000;
   const ExclusionResult r =
-      excludeUnknownRoots(s.shape, s.coefficients.data(), kSquare, circleAndLineRoots(), {}, o);
+      excludeUnknownRoots(s.shape, s.coefficients.data(), kSquare, circleAndLineRoots(), {}, {}, o);
   EXPECT_FALSE(r.proven);
 }
 
@@ -131,6 +131,26 @@ TEST(Exclusion, CoefficientEnclosuresCount) {
   EXPECT_FALSE(excludeUnknownRoots(t.shape, t.coefficients.data(), kSquare, known, {}).proven);
 }
 
+// The circle and the line are symmetric under (x, y) ↦ (−x, −y): half the square suffices, as
+// long as the mirror image of every known root is known too.
+TEST(Exclusion, ASymmetryHalvesTheDomainButNotTheRoots) {
+  const System s = circleAndLine();
+  const RealBox half = box({-0.01, -2.0}, {2.0, 2.0});
+  const std::vector<int> negated = {0, 1};
+  const ExclusionResult both = excludeUnknownRoots(s.shape, s.coefficients.data(), half,
+                                                   circleAndLineRoots(), {}, negated);
+  EXPECT_TRUE(both.proven) << both.why;
+  const ExclusionResult full = excludeUnknownRoots(s.shape, s.coefficients.data(), kSquare,
+                                                   circleAndLineRoots(), {});
+  EXPECT_LT(both.boxes, full.boxes);
+  // The half holds one root only, but its mirror image is missing from the list.
+  const std::vector<RealBox> one = {circleAndLineRoots()[0]};
+  const ExclusionResult r =
+      excludeUnknownRoots(s.shape, s.coefficients.data(), half, one, {}, negated);
+  EXPECT_FALSE(r.proven);
+  EXPECT_NE(r.why.find("mirror"), std::string::npos) << r.why;
+}
+
 TEST(Exclusion, SameAnswerEveryRun) {
   const System s = circleAndLine();
   const ExclusionResult a =
@@ -146,7 +166,7 @@ TEST(Exclusion, GivesUpWithinItsBudget) {
   ExclusionOptions o;
   o.max_boxes = 1;
   const ExclusionResult r =
-      excludeUnknownRoots(s.shape, s.coefficients.data(), kSquare, circleAndLineRoots(), {}, o);
+      excludeUnknownRoots(s.shape, s.coefficients.data(), kSquare, circleAndLineRoots(), {}, {}, o);
   EXPECT_FALSE(r.proven);
   EXPECT_LE(r.boxes, 2);
   EXPECT_NE(r.why.find("gave up"), std::string::npos) << r.why;
