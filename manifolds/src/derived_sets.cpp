@@ -179,7 +179,10 @@ MatchResult revolveForEachRotation(MatchContext& ctx, const RotationAlternatives
   Vector3d c[kMaxRotations];
   for (int k = 0; k < rots.size(); ++k) {
     const auto* spin = rots.parts[k].as<rotation::OneParallel>();
-    if (!spin || !revolveLine(ctx.set, spin->u_f, ctx.tol, &c[k])) return MatchResult::kNoMatch;
+    // A spin over an arc (a range on another vector) would need the revolved branch's turn
+    // bounded to it: not yet.
+    if (!spin || !spin->phi_periodic || !revolveLine(ctx.set, spin->u_f, ctx.tol, &c[k]))
+      return MatchResult::kNoMatch;
   }
   ConstraintSet derived;
   const double lever = mobileLever(ctx.set);

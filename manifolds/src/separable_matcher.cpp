@@ -95,24 +95,14 @@ struct PhiIntervals {
   bool degenerate = false;
 };
 
-PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const rotation::TwoAngle& base,
-                               const Tolerance& tol) {
+// The φ where h0 + amp cos(φ − φ0) lies in [lo, hi] (amp > 0): none, one arc, two arcs
+// symmetric about φ0, or the whole turn. The cosines are known to about the angle tolerance:
+// just beyond ±1, the band touches the sinusoid.
+PhiIntervals bandIntervals(double h0, double amp, double phi0, double lo, double hi,
+                           const Tolerance& tol) {
   PhiIntervals out;
-  const double sigma_m = angleBetween(a.u_m, b.u_m);
-  const Vector3d vf_perp = b.u_f - b.u_f.dot(a.u_f) * a.u_f;
-  if (std::sin(sigma_m) <= tol.angle || vf_perp.norm() <= tol.angle) {
-    out.degenerate = true;
-    return out;
-  }
-  const Vector3d w0 = base.R0 * a.u_m;
-  const Vector3d w0_perp = w0 - w0.dot(a.u_f) * a.u_f;
-  const double h0 = std::cos(a.alpha) * a.u_f.dot(b.u_f);
-  const double amp = w0_perp.norm() * vf_perp.norm();
-  // φ0: the φ at which w(φ) leans furthest toward v_f.
-  const double phi0 = std::atan2(w0_perp.cross(vf_perp).dot(a.u_f), w0_perp.dot(vf_perp));
-  const double L = (std::cos(sigma_m + b.alpha) - h0) / amp;
-  const double U = (std::cos(sigma_m - b.alpha) - h0) / amp;
-  // The cosines are known to about the angle tolerance: just beyond ±1, the cones touch.
+  const double L = (lo - h0) / amp;
+  const double U = (hi - h0) / amp;
   const double eps = tol.angle / amp;
   if (L > 1.0 + eps || U < -1.0 - eps) return out;
   const double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
@@ -128,6 +118,32 @@ PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const rotation::T
     out.iv[out.count++] = {phi0 - psi_out, phi0 - psi_in, false};
   }
   return out;
+}
+
+// A spun vector w(φ) = R(u_f, φ) w0 against a fixed v_f: w(φ)·v_f = h0 + amp cos(φ − φ0).
+struct Sinusoid {
+  double h0, amp, phi0;
+};
+Sinusoid spunDot(const Vector3d& u_f, const Vector3d& w0, const Vector3d& v_f) {
+  const Vector3d w0_perp = w0 - w0.dot(u_f) * u_f;
+  const Vector3d vf_perp = v_f - v_f.dot(u_f) * u_f;
+  // φ0: the φ at which w(φ) leans furthest toward v_f.
+  return {w0.dot(u_f) * v_f.dot(u_f), w0_perp.norm() * vf_perp.norm(),
+          std::atan2(w0_perp.cross(vf_perp).dot(u_f), w0_perp.dot(vf_perp))};
+}
+
+PhiIntervals twoAngleIntervals(const Angle& a, const Angle& b, const rotation::TwoAngle& base,
+                               const Tolerance& tol) {
+  PhiIntervals out;
+  const double sigma_m = angleBetween(a.u_m, b.u_m);
+  const Vector3d vf_perp = b.u_f - b.u_f.dot(a.u_f) * a.u_f;
+  if (std::sin(sigma_m) <= tol.angle || vf_perp.norm() <= tol.angle) {
+    out.degenerate = true;
+    return out;
+  }
+  const Sinusoid s = spunDot(a.u_f, base.R0 * a.u_m, b.u_f);
+  return bandIntervals(std::cos(a.alpha) * a.u_f.dot(b.u_f), s.amp, s.phi0,
+                       std::cos(sigma_m + b.alpha), std::cos(sigma_m - b.alpha), tol);
 }
 
 rotation::TwoAngle twoAngleBase(const Angle& a, const Angle& b) {
@@ -287,6 +303,117 @@ MatchResult determinedRotation(MatchContext& ctx, const Angle* ang, int n,
   return MatchResult::kMatched;
 }
 
+// A parallelism (R u_m = u_f: the spin φ about u_f free) and an angle range on another mobile
+// vector v_m (issue 16: a keyway within ±10°, jaws level within ±20°): φ on the arcs where
+// angle(R(φ) v_m, v_f) ∈ [lo, hi], one branch each; a spin that does not move the angle (v_m
+// along u_m, or v_f along u_f) keeps the whole turn or none.
+MatchResult spinWithinRange(MatchContext& ctx, const Angle& par, const Fundamental& range,
+                            RotationAlternatives& out) {
+  const Tolerance tol = ctx.tol.widened(par.err + range.err);
+  const rotation::OneParallel base(par.u_m, par.u_f);
+  const Sinusoid s = spunDot(par.u_f, base.R0 * range.p, range.q);
+  const double lo = std::cos(range.hi), hi = std::cos(range.lo);  // w(φ)·v_f's band
+  const SourceMask both = par.sources | range.sources;
+  if (s.amp <= tol.angle) {
+    if (s.h0 < lo - tol.angle || s.h0 > hi + tol.angle)
+      return inconsistent(ctx, both, "a parallelism that keeps another vector out of its range");
+    out.add(base, par.err);
+    return MatchResult::kMatched;
+  }
+  const PhiIntervals iv = bandIntervals(s.h0, s.amp, s.phi0, lo, hi, tol);
+  if (iv.count == 0)
+    return inconsistent(ctx, both, "a spin about a parallelism that never meets an angle range");
+  for (int k = 0; k < iv.count; ++k) {
+    const PhiIntervals::Interval& i = iv.iv[k];
+    if (i.periodic) {
+      out.add(base, par.err);
+    } else if (i.hi - i.lo <= tol.angle) {  // the range touched at one spin
+      const double phi[1] = {0.5 * (i.lo + i.hi)};
+      out.add(rotation::Fixed(base.rotation(phi)), par.err + range.err);
+    } else {
+      rotation::OneParallel r = base;
+      r.phi_lo = i.lo;
+      r.phi_hi = i.hi;
+      r.phi_periodic = false;
+      out.add(r, par.err);
+    }
+  }
+  return MatchResult::kMatched;
+}
+
+// Two angle constraints on one mobile vector m, at least one a range (issue 16: a torch's work
+// and travel angles, a camera's viewing angles; an exact angle and a range): m's direction in the
+// intersection of two bands on the sphere, the spin about m free. About one axis the bands are
+// one range; otherwise a TwoAngleRange branch for each side of the plane of the fixed directions.
+MatchResult oneVectorTwoRanges(MatchContext& ctx, Fundamental f, Fundamental g,
+                               RotationAlternatives& out) {
+  if (g.p.dot(f.p) < 0.0) {  // the angle of −m is π minus m's
+    g.p = -g.p;
+    const double lo = g.lo;
+    g.lo = kPi - g.hi;
+    g.hi = kPi - lo;
+  }
+  if (g.exact() && !f.exact()) std::swap(f, g);  // an exact angle is α: 2 DOF
+  const Tolerance tol = ctx.tol.widened(f.err + g.err);
+  const SourceMask both = f.sources | g.sources;
+  const double err = f.err + g.err;
+  const double sigma = angleBetween(f.q, g.q);
+  if (sigma <= tol.angle || sigma >= kPi - tol.angle) {  // bands about one axis: one range
+    const double g_lo = sigma <= tol.angle ? g.lo : kPi - g.hi;
+    const double g_hi = sigma <= tol.angle ? g.hi : kPi - g.lo;
+    const double lo = std::max(f.lo, g_lo), hi = std::min(f.hi, g_hi);
+    if (lo > hi + tol.angle)
+      return inconsistent(ctx, both, "two angle ranges about one axis that do not overlap");
+    out.add(rotation::OneAngleRange(f.p, f.q, lo, std::max(lo, hi)), err);
+    return MatchResult::kMatched;
+  }
+  int added = 0;
+  for (double side : {1.0, -1.0}) {
+    rotation::TwoAngleRange r(f.p, f.q, f.lo, f.hi, g.q, g.lo, g.hi, side);
+    // Ranges that only touch (within the tolerance) keep the sliver where they touch.
+    if (r.empty())
+      r = rotation::TwoAngleRange(f.p, f.q, f.lo - tol.angle, f.hi + tol.angle, g.q,
+                                  g.lo - tol.angle, g.hi + tol.angle, side);
+    if (r.empty()) continue;
+    out.add(r, err);
+    ++added;
+  }
+  if (added == 0)
+    return inconsistent(ctx, both, "two angle constraints on one vector that no direction meets");
+  return MatchResult::kMatched;
+}
+
+// Angle constraints with a range (issue 16): one alone, a parallelism and a range, or two on one
+// mobile vector; other combinations are left to other matchers (and then the numeric stage).
+MatchResult matchRanged(MatchContext& ctx, RotationAlternatives& out) {
+  const auto& rs = ctx.set.rotational;
+  if (rs.size() == 1) {
+    out.add(rotation::OneAngleRange(rs[0].p, rs[0].q, rs[0].lo, rs[0].hi));
+    return MatchResult::kMatched;
+  }
+  if (rs.size() != 2) return MatchResult::kNoMatch;
+  // The exact one first, else a fixed order of the geometry (not the user's).
+  Fundamental f = rs[0], g = rs[1];
+  auto before = [](const Fundamental& a, const Fundamental& b) {
+    if (a.exact() != b.exact()) return a.exact();
+    if (a.lo != b.lo) return a.lo < b.lo;
+    if (a.hi != b.hi) return a.hi < b.hi;
+    for (int k = 0; k < 3; ++k) {
+      if (a.q[k] != b.q[k]) return a.q[k] < b.q[k];
+      if (a.p[k] != b.p[k]) return a.p[k] < b.p[k];
+    }
+    return false;
+  };
+  if (before(g, f)) std::swap(f, g);
+  if (f.exact()) {
+    const Angle a = normalise(f, ctx.tol);
+    if (a.parallel) return spinWithinRange(ctx, a, g, out);
+  }
+  if (f.p.cross(g.p).norm() <= ctx.tol.widened(f.err + g.err).angle)
+    return oneVectorTwoRanges(ctx, f, g, out);
+  return MatchResult::kNoMatch;
+}
+
 // A total order on angle constraints by their geometry alone, so that the branches do not depend
 // on the order in which the user listed the constraints.
 bool geometricLess(const Angle& a, const Angle& b) {
@@ -312,10 +439,8 @@ MatchResult matchRotation(MatchContext& ctx, RotationAlternatives& out) {
     out.add(rotation::Free{});
     return MatchResult::kMatched;
   }
-  if (n == 1 && !rs[0].exact()) {
-    out.add(rotation::OneAngleRange(rs[0].p, rs[0].q, rs[0].lo, rs[0].hi));
-    return MatchResult::kMatched;
-  }
+  for (const auto& f : rs)
+    if (!f.exact()) return matchRanged(ctx, out);
   if (n == 1) {
     if (ang[0].parallel)
       out.add(rotation::OneParallel(ang[0].u_m, ang[0].u_f), ang[0].err);
@@ -497,14 +622,6 @@ bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
   return true;
 }
 
-// A set with a range (min/max) is matched only where the range stands alone in its list: no
-// PMF rule combines ranges, so a range with other constraints of its kind is left unhandled.
-bool rangesStandAlone(const FixedVector<Fundamental, kMaxFundamentals>& list) {
-  for (const auto& f : list)
-    if (!f.exact() && list.size() > 1) return false;
-  return true;
-}
-
 bool hasKind(const ConstraintSet& set, FundamentalKind kind) {
   for (const auto& f : set.translational)
     if (f.kind == kind) return true;
@@ -512,7 +629,6 @@ bool hasKind(const ConstraintSet& set, FundamentalKind kind) {
 }
 
 MatchResult matchSeparable(MatchContext& ctx, const void* /*context*/) {
-  if (!rangesStandAlone(ctx.set.rotational)) return MatchResult::kNoMatch;
   RotationAlternatives rots;
   MatchResult r = matchRotation(ctx, rots);
   if (r != MatchResult::kMatched) return r;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "random_problems.hpp"
@@ -108,6 +109,109 @@ TEST(RotationPart, TwoAngleRotationsMeetBothAngles) {
   EXPECT_GT(checked, 100);
 }
 
+// A spin over an arc: every φ of the arc keeps the parallelism, the projection stays on the
+// arc (the nearer end when the nearest spin is off it), and round-trips on it.
+TEST(RotationPart, OneParallelOverAnArcStaysOnIt) {
+  Rng rng(11);
+  for (int i = 0; i < 100; ++i) {
+    const Vector3d um = rng.unit(), uf = rng.unit();
+    rotation::OneParallel spin(um, uf);
+    spin.phi_lo = rng.uniform(-4.0, 2.0);
+    spin.phi_hi = spin.phi_lo + rng.uniform(0.05, 5.0);
+    spin.phi_periodic = false;
+    const RotationPart r = spin;
+    const Parameter p = r.parameter(0);
+    EXPECT_EQ(p.min, spin.phi_lo);
+    EXPECT_EQ(p.max, spin.phi_hi);
+    EXPECT_FALSE(p.periodic);
+    double t[1] = {rng.uniform(spin.phi_lo, spin.phi_hi)}, back[1];
+    EXPECT_TRUE((r.rotation(t) * um).isApprox(uf, 1e-12));
+    r.project(r.rotation(t), back);
+    EXPECT_NEAR(back[0], t[0], 1e-9);
+    // Any rotation projects onto the arc, at its nearest spin or an end.
+    r.project(rng.pose().linear(), back);
+    EXPECT_GE(back[0], spin.phi_lo);
+    EXPECT_LE(back[0], spin.phi_hi);
+  }
+  EXPECT_DOUBLE_EQ(rotation::ontoArc(0.5, 0.0, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(rotation::ontoArc(0.5 + 2 * kPi, 0.0, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(rotation::ontoArc(1.2, 0.0, 1.0), 1.0);   // nearer the upper end
+  EXPECT_DOUBLE_EQ(rotation::ontoArc(-0.2, 0.0, 1.0), 0.0);  // nearer the lower end
+}
+
+// Ranges of angles from two fixed directions: every parameter of the box gives a rotation whose
+// m meets both ranges on the branch's side (the defining equations, evaluated here), the spin is
+// the second parameter, and the projection round-trips. Boxes the triangle inequalities cut use
+// β's place between its bounds; an exact α gives two parameters.
+TEST(RotationPart, TwoAngleRangesMeetBothRangesAndProjectBack) {
+  Rng rng(12);
+  int fractions = 0, exact = 0, checked = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vector3d m = rng.unit(), u1 = rng.unit(), u2 = rng.unit();
+    double a_lo = rng.uniform(0.0, 2.5), a_hi = a_lo + rng.uniform(0.0, 0.8);
+    if (i % 5 == 0) a_hi = a_lo;  // an exact angle
+    const double b_lo = rng.uniform(0.0, 2.5), b_hi = b_lo + rng.uniform(0.05, 0.8);
+    for (double side : {1.0, -1.0}) {
+      const rotation::TwoAngleRange shape(m, u1, a_lo, std::min(a_hi, kPi), u2, b_lo,
+                                          std::min(b_hi, kPi), side);
+      if (shape.empty()) continue;
+      const RotationPart r = shape;
+      ASSERT_EQ(r.dof(), a_lo == a_hi ? 2 : 3);
+      fractions += shape.fraction && r.dof() == 3;
+      exact += r.dof() == 2;
+      double t[3], back[3];
+      for (int k = 0; k < r.dof(); ++k) {
+        const Parameter p = r.parameter(k);
+        ASSERT_LE(p.min, p.max) << p.name;
+        t[k] = rng.uniform(p.min, p.max);
+      }
+      const Matrix3d R = r.rotation(t);
+      const Vector3d d = R * m;
+      const double a = angleBetween(d, u1), b = angleBetween(d, u2);
+      EXPECT_GE(a, a_lo - 1e-9);
+      EXPECT_LE(a, a_hi + 1e-9);
+      EXPECT_GE(b, b_lo - 1e-9);
+      EXPECT_LE(b, b_hi + 1e-9);
+      EXPECT_GE(side * d.dot(u1.cross(u2)), -1e-9);
+      ASSERT_NE(r.spinAxis(), nullptr);
+      EXPECT_LT(rotationDistance(r.spinBase(t) * axisAngle(m, t[1]), R), 1e-12);
+      r.project(R, back);
+      EXPECT_LT(rotationDistance(r.rotation(back), R), 1e-7) << "i " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_GT(fractions, 20);
+  EXPECT_GT(exact, 20);
+}
+
+// The two sides' branches hold every direction that meets both ranges: a random direction in
+// both bands is on one of them (projection finds it).
+TEST(RotationPart, TwoAngleRangesHoldEveryDirectionInBothBands) {
+  Rng rng(13);
+  int checked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Vector3d m = rng.unit(), u1 = rng.unit(), u2 = rng.unit();
+    const Vector3d d = rng.unit();
+    const double a = angleBetween(d, u1), b = angleBetween(d, u2);
+    const double a_lo = std::max(0.0, a - rng.uniform(0.0, 0.5)), a_hi = std::min(kPi, a + 0.3);
+    const double b_lo = std::max(0.0, b - rng.uniform(0.0, 0.5)), b_hi = std::min(kPi, b + 0.2);
+    double best = 1e9;
+    for (double side : {1.0, -1.0}) {
+      const rotation::TwoAngleRange shape(m, u1, a_lo, a_hi, u2, b_lo, b_hi, side);
+      if (shape.empty()) continue;
+      const RotationPart r = shape;
+      Matrix3d R = Eigen::Quaterniond::FromTwoVectors(m, d).toRotationMatrix();
+      double t[3];
+      r.project(R, t);
+      best = std::min(best, angleBetween(r.rotation(t) * m, d));
+    }
+    EXPECT_LT(best, 1e-7) << "i " << i;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 300);
+}
+
 TEST(RotationPart, FixedIsTheNearestRotationAndHasNoParameters) {
   Rng rng(6);
   const Matrix3d R = rng.pose().linear();
@@ -123,6 +227,10 @@ TEST(RotationPart, NamesAreTheOnesResultsWrite) {
   EXPECT_STREQ(
       RotationPart(rotation::OneAngleRange(Vector3d::UnitX(), Vector3d::UnitZ(), 0.1, 0.2)).name(),
       "OneAngleMinMax");
+  EXPECT_STREQ(RotationPart(rotation::TwoAngleRange(Vector3d::UnitX(), Vector3d::UnitZ(), 0.5, 0.7,
+                                                    Vector3d::UnitY(), 1.4, 1.7, 1.0))
+                   .name(),
+               "TwoAngleMinMax");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "relpos/manifolds/rotation/one_angle_range.hpp"
 #include "relpos/manifolds/rotation/one_parallel.hpp"
 #include "relpos/manifolds/rotation/two_angle.hpp"
+#include "relpos/manifolds/rotation/two_angle_range.hpp"
 
 namespace relpos::manifolds {
 
@@ -18,6 +19,7 @@ using RotationShape = std::variant<rotation::Fixed,        //
                                    rotation::OneAngle,     //
                                    rotation::TwoAngle,     //
                                    rotation::Free,         //
-                                   rotation::OneAngleRange>;
+                                   rotation::OneAngleRange,  //
+                                   rotation::TwoAngleRange>;
 
 }  // namespace relpos::manifolds
