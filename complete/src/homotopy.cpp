@@ -51,6 +51,70 @@ void CoefficientPolynomials::evaluate(Complex tau, Complex* c, Complex* dc) cons
   }
 }
 
+namespace {
+
+// Value and derivative of every term's polynomial at real s (Horner), degree D known at compile
+// time for the common degrees (the inner loop unrolled), or d at run time (D < 0).
+template <int D>
+void hornerReal(const double* a, int terms, int d, double s, double* c, double* dc) {
+  const int degree = D >= 0 ? D : d;
+  for (int t = 0; t < terms; ++t) {
+    const double* at = a + 2 * static_cast<std::size_t>(t) * (degree + 1);
+    Pair v = loadPair(at + 2 * degree), dv{0.0, 0.0};
+    for (int j = degree - 1; j >= 0; --j) {
+      dv = dv * s + v;
+      v = v * s + loadPair(at + 2 * j);
+    }
+    storePair(c + 2 * t, v);
+    storePair(dc + 2 * t, dv);
+  }
+}
+
+}  // namespace
+
+void CoefficientPolynomials::evaluate(double s, Complex* c, Complex* dc) const {
+  const double* av = reinterpret_cast<const double*>(a.data());
+  double* cv = reinterpret_cast<double*>(c);
+  double* dv = reinterpret_cast<double*>(dc);
+  switch (degree) {
+    case 1:
+      return hornerReal<1>(av, terms, degree, s, cv, dv);
+    case 2:
+      return hornerReal<2>(av, terms, degree, s, cv, dv);
+    case 3:
+      return hornerReal<3>(av, terms, degree, s, cv, dv);
+    default:
+      return hornerReal<-1>(av, terms, degree, s, cv, dv);
+  }
+}
+
+CoefficientPolynomials alongArc(const CoefficientPolynomials& p, Complex gamma) {
+  // D^d c(τ(s)) = Σ_j a_j γ^j s^j (1 + δ s)^(d − j), δ = γ − 1: s^k takes a_j γ^j C(d − j, k − j)
+  // δ^(k − j) from each j ≤ k.
+  const int d = p.degree, m = d + 1;
+  const Complex delta = gamma - 1.0;
+  std::vector<Complex> w(static_cast<std::size_t>(m) * m, Complex(0.0, 0.0));  // w[j m + k]
+  Complex gj(1.0, 0.0);
+  for (int j = 0; j <= d; ++j) {
+    Complex term = gj;  // γ^j C(d − j, i) δ^i for i = k − j
+    for (int i = 0; j + i <= d; ++i) {
+      w[static_cast<std::size_t>(j) * m + j + i] = term;
+      term *= delta * double(d - j - i) / double(i + 1);
+    }
+    gj *= gamma;
+  }
+  CoefficientPolynomials out;
+  out.terms = p.terms;
+  out.degree = d;
+  out.a.assign(p.a.size(), Complex(0.0, 0.0));
+  for (int t = 0; t < p.terms; ++t)
+    for (int j = 0; j <= d; ++j)
+      for (int k = j; k <= d; ++k)
+        out.a[static_cast<std::size_t>(t) * m + k] +=
+            p.a[static_cast<std::size_t>(t) * m + j] * w[static_cast<std::size_t>(j) * m + k];
+  return out;
+}
+
 CoefficientPolynomials interpolateSegment(const Family& f, const Complex* p0, const Complex* p1) {
   CoefficientPolynomials out;
   out.terms = static_cast<int>(f.shape().terms.size());
@@ -97,8 +161,7 @@ Complex randomGamma(std::uint64_t seed) {
 Tracker::Tracker(const CompiledShape& shape, const CoefficientPolynomials& coefficients, Arc arc,
                  const Complex* end_coefficients, const TrackerOptions& options)
     : shape_(shape),
-      poly_(coefficients),
-      arc_(arc),
+      poly_(alongArc(coefficients, arc.gamma)),
       end_(end_coefficients),
       options_(options),
       scratch_(shape),
@@ -108,18 +171,15 @@ Tracker::Tracker(const CompiledShape& shape, const CoefficientPolynomials& coeff
   f_.resize(n);
   fs_.resize(n);
   J_.resize(n, n);
+  k2_.resize(n);
+  k3_.resize(n);
+  k4_.resize(n);
+  z_.resize(n);
 }
 
 void Tracker::coefficientsAt(double s) {
   if (s == s_cached_) return;
-  poly_.evaluate(arc_.tau(s), c_.data(), dc_.data());
-  const Complex dt = arc_.dtau(s);
-  double* dv = reinterpret_cast<double*>(dc_.data());
-  for (std::size_t t = 0; t < dc_.size(); ++t) {
-    const double re = dv[2 * t] * dt.real() - dv[2 * t + 1] * dt.imag();
-    dv[2 * t + 1] = dv[2 * t] * dt.imag() + dv[2 * t + 1] * dt.real();
-    dv[2 * t] = re;
-  }
+  poly_.evaluate(s, c_.data(), dc_.data());
   s_cached_ = s;
 }
 
@@ -136,12 +196,13 @@ double Tracker::newton(CVec& x, double s, CVec* v) {
   coefficientsAt(s);
   evaluate(shape_, c_.data(), v ? dc_.data() : nullptr, x, scratch_, &f_, &J_, v ? &fs_ : nullptr);
   if (!lu_.factor(J_)) return -1.0;
-  lu_.solve(f_, d_);
-  if (!finite(d_)) return -1.0;
   if (v) {
-    lu_.solve(fs_, *v);
+    lu_.solve(f_, fs_, d_, *v);
     *v = -*v;
+  } else {
+    lu_.solve(f_, d_);
   }
+  if (!finite(d_)) return -1.0;
   x -= d_;
   return normInf(d_);
 }
@@ -154,13 +215,25 @@ double Tracker::chord(CVec& x) {
   return normInf(d_);
 }
 
+bool Tracker::rungeKutta(const CVec& x, const CVec& v, double s, double h, double s1, CVec& y) {
+  z_ = x + (0.5 * h) * v;
+  if (!velocity(z_, s + 0.5 * h, k2_)) return false;
+  z_ = x + (0.5 * h) * k2_;
+  if (!velocity(z_, s + 0.5 * h, k3_)) return false;
+  z_ = x + h * k3_;
+  if (!velocity(z_, s1, k4_)) return false;
+  y = x + (h / 6.0) * (v + 2.0 * (k2_ + k3_) + k4_);
+  return true;
+}
+
 PathEnd Tracker::track(const CVec& start) {
   PathEnd end;
   const int n = shape_.variables();
-  CVec x = start, y(n), k1(n), k2(n), k3(n), k4(n), k1_next(n);
+  CVec x = start, v(n), y(n), v_next(n);
+  lu_.reset();  // no pivot order from the last path
   const double limit = options_.divergence * (1.0 + normInf(start));
   double s = 0.0, h = options_.initial_step;
-  if (!velocity(x, s, k1)) {
+  if (!velocity(x, s, v)) {
     end.x = x;
     return end;
   }
@@ -171,14 +244,12 @@ PathEnd Tracker::track(const CVec& start) {
     }
     const double hh = std::min(h, 1.0 - s);
     const double s1 = (hh == 1.0 - s) ? 1.0 : s + hh;
-    // RK4; k1 is the velocity at x carried over from the last corrector.
-    bool ok = velocity(x + (0.5 * hh) * k1, s + 0.5 * hh, k2) &&
-              velocity(x + (0.5 * hh) * k2, s + 0.5 * hh, k3) && velocity(x + hh * k3, s1, k4);
+    // RK4; v is the velocity at x carried over from the last corrector.
+    bool ok = rungeKutta(x, v, s, hh, s1, y);
     double e1 = 0.0;
     if (ok) {
-      y = x + (hh / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
       const double scale = 1.0 + normInf(y);
-      e1 = newton(y, s1, &k1_next) / scale;
+      e1 = newton(y, s1, &v_next) / scale;
       ok = e1 >= 0.0 && e1 <= options_.max_error;
       // A large first correction must be followed by a much smaller one (Newton contracting
       // quadratically from inside the path's basin, not sitting between two paths).
@@ -190,8 +261,8 @@ PathEnd Tracker::track(const CVec& start) {
     ++end.steps;
     if (ok) {
       x = y;
+      v = v_next;
       s = s1;
-      k1 = k1_next;
       const double grow = e1 > 0.0 ? 0.9 * std::pow(options_.target_error / e1, 0.2) : 3.0;
       h = std::min(options_.max_step, hh * std::clamp(grow, 0.3, 3.0));
       if (normInf(x) > limit) {

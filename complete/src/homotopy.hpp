@@ -20,6 +20,8 @@ struct CoefficientPolynomials {
   std::vector<Complex> a;
   // c (and dc = dc/dτ if not null) at τ.
   void evaluate(Complex tau, Complex* c, Complex* dc) const;
+  // The same at a real argument (the tracker's, along its arc: alongArc below), both computed.
+  void evaluate(double s, Complex* c, Complex* dc) const;
 };
 
 // The coefficients of f along p0 → p1 from f.coefficients at degree + 1 equally spaced nodes.
@@ -31,6 +33,12 @@ struct Arc {
   Complex tau(double s) const;
   Complex dtau(double s) const;  // dτ/ds
 };
+
+// The coefficients along the arc as polynomials in s of the same degree d: D(s)^d c(τ(s)) with
+// D(s) = 1 + (γ − 1) s, which clears τ's denominator. The factor, never zero on [0, 1] (|D| ≥
+// cos(θ/2) for γ = e^{iθ}), leaves every root and every Newton step unchanged, and the tracker's
+// coefficients cost a real Horner scheme instead of a complex one and a chain rule.
+CoefficientPolynomials alongArc(const CoefficientPolynomials& p, Complex gamma);
 
 // γ = e^{iθ} with |θ| in [0.25, 2.25] from a seed (θ near ±π bends the arc far from [0, 1]).
 Complex randomGamma(std::uint64_t seed);
@@ -73,6 +81,8 @@ class Tracker {
  private:
   void coefficientsAt(double s);
   bool velocity(const CVec& x, double s, CVec& v);
+  // y: the RK4 prediction from x (velocity v) at s to s1 = s + h.
+  bool rungeKutta(const CVec& x, const CVec& v, double s, double h, double s1, CVec& y);
   // One Newton step of H(·, s) at x: x -= step; returns |step|∞, or a negative number if the
   // Jacobian is singular or the result not finite. v (if not null): the velocity at x before
   // the step, from the same Jacobian.
@@ -81,8 +91,7 @@ class Tracker {
   double chord(CVec& x);
 
   const CompiledShape& shape_;
-  const CoefficientPolynomials& poly_;
-  Arc arc_;
+  CoefficientPolynomials poly_;  // in s (alongArc)
   const Complex* end_;
   TrackerOptions options_;
   EvalScratch scratch_;
@@ -92,6 +101,7 @@ class Tracker {
   CMat J_;
   SmallLU lu_;
   CVec d_;
+  CVec k2_, k3_, k4_, z_;  // RK4's stage velocities and stage point
 };
 
 // Newton on F with coefficients c until the step is below 1e-15 (1 + |x|) or `iterations`:

@@ -5,6 +5,7 @@
 // (node = parent · x_var), evaluated once per point and shared by all equations.
 #include <Eigen/Core>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "relpos/complete/family.hpp"
@@ -23,6 +24,22 @@ inline Complex mul(const Complex& a, const Complex& b) {
   return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
 }
 
+// A complex number as one 16-byte vector (re, im) (the GCC and Clang vector extension: SSE2 on
+// x86-64, NEON on AArch64). The tracker's arithmetic was bound by scalar multiplies and adds; in
+// pairs a product-sum k·m takes two packed products, (kr mr, ki mi) and (kr mi, ki mr), summed
+// apart and combined once at the end of the sum. Loads and stores by memcpy: std::complex and
+// double[2] storage alike, no alignment assumed.
+using Pair = double __attribute__((vector_size(16)));
+inline Pair loadPair(const double* p) {
+  Pair v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void storePair(double* p, Pair v) { std::memcpy(p, &v, sizeof v); }
+inline Pair swapPair(Pair v) { return Pair{v[1], v[0]}; }
+// z · w for z = (zr, zi) given as z and (zi, zr), w as wa = (wr, wr) and wb = (−wi, wi).
+inline Pair mulPair(Pair z, Pair z_swapped, Pair wa, Pair wb) { return wa * z + wb * z_swapped; }
+
 class CompiledShape {
  public:
   explicit CompiledShape(const SystemShape& shape);
@@ -38,7 +55,6 @@ class CompiledShape {
     std::uint16_t node = 0;
     std::uint8_t var = 0;
     std::uint8_t power = 0;
-    double weight = 0.0;  // = power (a conversion less in the inner loop)
   };
 
   int variables() const { return variables_; }
@@ -48,17 +64,25 @@ class CompiledShape {
   const std::vector<std::uint16_t>& termNode() const { return term_node_; }
   const std::vector<std::uint16_t>& termEquation() const { return term_equation_; }
   const std::vector<Partial>& partials() const { return partials_; }
-  // The terms ordered by equation, and the partials by (equation, var): each run of equal keys
-  // sums in a register and is written once (accumulating in place serialises on the store).
+  // evaluate()'s lists: the terms as (coefficient, node) ordered by equation, and the partials by
+  // (equation, var), a partial of power p listed p times (no weight to multiply). Each run of
+  // equal keys sums in registers and is written once (accumulating in place serialises on the
+  // store). An entry holds byte offsets, of the coefficient (16 per term) and of the node's
+  // values (32 per node, EvalScratch): the sums' addresses without a multiply.
+  struct Entry {
+    std::uint32_t coefficient = 0;
+    std::uint32_t node = 0;
+    Entry(std::uint32_t term, std::uint16_t n) : coefficient(16 * term), node(32u * n) {}
+  };
   struct Run {
     std::uint16_t equation = 0;
     std::uint8_t var = 0;
     std::uint32_t begin = 0, end = 0;
   };
-  const std::vector<std::uint32_t>& termOrder() const { return term_order_; }
+  const std::vector<Entry>& termEntries() const { return term_entries_; }
   const std::vector<Run>& termRuns() const { return term_runs_; }
-  const std::vector<Partial>& sortedPartials() const { return sorted_partials_; }
-  const std::vector<Run>& partialRuns() const { return partial_runs_; }
+  const std::vector<Entry>& jacobianEntries() const { return jacobian_entries_; }
+  const std::vector<Run>& jacobianRuns() const { return jacobian_runs_; }
   // Largest monomial degree of each equation (total-degree start systems, Bézout number).
   const std::vector<int>& equationDegrees() const { return degrees_; }
 
@@ -69,16 +93,17 @@ class CompiledShape {
   std::vector<std::uint16_t> term_equation_;
   std::vector<Partial> partials_;
   std::vector<int> degrees_;
-  std::vector<std::uint32_t> term_order_;
+  std::vector<Entry> term_entries_;
   std::vector<Run> term_runs_;
-  std::vector<Partial> sorted_partials_;
-  std::vector<Run> partial_runs_;
+  std::vector<Entry> jacobian_entries_;
+  std::vector<Run> jacobian_runs_;
 };
 
-// Scratch for evaluate(): one per tracker, sized once (no allocation per evaluation).
+// Scratch for evaluate(): one per tracker, sized once (no allocation per evaluation). Node k's
+// value as (re, im, im, re) at values[4 k]: the pair and its swap, both loaded by the sums.
 struct EvalScratch {
-  std::vector<Complex> values;
-  explicit EvalScratch(const CompiledShape& s) : values(s.nodes()) {}
+  std::vector<double> values;
+  explicit EvalScratch(const CompiledShape& s) : values(4 * static_cast<std::size_t>(s.nodes())) {}
 };
 
 // f = F(x) with coefficients c if f; J = ∂F/∂x if J; fs = Σ dc_t · m_t(x) if dc and fs (the
