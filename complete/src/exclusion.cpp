@@ -1,6 +1,6 @@
 #include "exclusion.hpp"
 
-#include <Eigen/LU>
+#include <Eigen/Core>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -20,6 +20,39 @@ struct Box {
 };
 
 enum class Verdict { kNoRoot, kOneRoot, kUndecided };
+
+// Y = A⁻¹ (n × n, row-major) by Gauss-Jordan with partial pivoting; false when A is singular to
+// working precision. Any Y will do for Krawczyk's test (only the bounds must be rigorous): an
+// approximate inverse, computed in whatever rounding mode is on.
+bool invert(const double* A, int n, double* Y) {
+  double a[kMaxVariables * kMaxVariables];
+  for (int k = 0; k < n * n; ++k) a[k] = A[k], Y[k] = 0.0;
+  for (int i = 0; i < n; ++i) Y[i * n + i] = 1.0;
+  for (int col = 0; col < n; ++col) {
+    int p = col;
+    for (int i = col + 1; i < n; ++i)
+      if (std::abs(a[i * n + col]) > std::abs(a[p * n + col])) p = i;
+    const double pivot = a[p * n + col];
+    if (!(std::abs(pivot) > 0.0) || !std::isfinite(pivot)) return false;
+    if (p != col)
+      for (int j = 0; j < n; ++j) {
+        std::swap(a[p * n + j], a[col * n + j]);
+        std::swap(Y[p * n + j], Y[col * n + j]);
+      }
+    const double inv = 1.0 / pivot;
+    for (int j = 0; j < n; ++j) a[col * n + j] *= inv, Y[col * n + j] *= inv;
+    for (int i = 0; i < n; ++i) {
+      if (i == col) continue;
+      const double f = a[i * n + col];
+      if (f == 0.0) continue;
+      for (int j = 0; j < n; ++j) a[i * n + j] -= f * a[col * n + j], Y[i * n + j] -= f * Y[col * n + j];
+    }
+  }
+  for (int k = 0; k < n * n; ++k)
+    if (!std::isfinite(Y[k])) return false;
+  return true;
+}
+
 
 // Krawczyk's operator on boxes of any shape (Rump's form, as krawczyk.hpp, with a radius per
 // coordinate): for the centre c, r the half-widths and Y ≈ mid(J(X))⁻¹,
@@ -42,30 +75,45 @@ class Krawczyk {
       if (!std::isfinite(f_[i].lower()) || !std::isfinite(f_[i].upper())) return Verdict::kUndecided;
       if (f_[i].lower() > 0.0 || f_[i].upper() < 0.0) return Verdict::kNoRoot;
     }
-    RMat mid(n_, n_);
-    for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) mid(i, j) = midpoint(J_[i * n_ + j]);
-    if (!mid.allFinite()) return Verdict::kUndecided;
-    const RMat Y = Eigen::PartialPivLU<RMat>(mid).inverse();
-    if (!Y.allFinite()) return Verdict::kUndecided;
+    // Y = mid(J)⁻¹; then |I − Y J| ≤ |I − Y Jm| + |Y| Jr over the box, J = Jm ± Jr (Rump's
+    // midpoint-radius form: three products of doubles instead of n³ interval products), the
+    // rounding of Y Jm bounded by γ |Y| |Jm|. Every bound is computed rounding upward.
+    const int n = n_;
+    double Jm[kMaxVariables * kMaxVariables], Jr[kMaxVariables * kMaxVariables];
+    double Y[kMaxVariables * kMaxVariables];
+    for (int k = 0; k < n * n; ++k) {
+      Jm[k] = midpoint(J_[k]);
+      Jr[k] = std::max(J_[k].upper() - Jm[k], Jm[k] - J_[k].lower());
+      if (!std::isfinite(Jm[k]) || !std::isfinite(Jr[k])) return Verdict::kUndecided;
+    }
+    if (!invert(Jm, n, Y)) return Verdict::kUndecided;
     FI c[kMaxVariables], fc[kMaxVariables];
     double r[kMaxVariables];
-    for (int i = 0; i < n_; ++i) {
+    for (int i = 0; i < n; ++i) {
       const double m = midpoint(X.x[i]);
       c[i] = FI(m);
       r[i] = std::max(X.x[i].upper() - m, m - X.x[i].lower());  // upward: bounds the reach
     }
     evaluateBox(shape_, coeffs_.data(), c, values_.data(), fc, static_cast<FI*>(nullptr));
+    // γ_{n+2} for directed rounding (unit 2⁻⁵², each operation off by less than one unit).
+    const double gamma = (n + 2) * 0x1p-52 / (1.0 - (n + 2) * 0x1p-52);
     bool inside = true, disjoint = false;
     FI K[kMaxVariables];
-    for (int i = 0; i < n_; ++i) {
+    for (int i = 0; i < n; ++i) {
       FI a(0.0);
-      for (int k = 0; k < n_; ++k) a = a - Y(i, k) * fc[k];
+      for (int k = 0; k < n; ++k) a = a - Y[i * n + k] * fc[k];
       double s = 0.0;
-      for (int j = 0; j < n_; ++j) {
-        FI m(i == j ? 1.0 : 0.0);
-        for (int k = 0; k < n_; ++k) m = m - Y(i, k) * J_[k * n_ + j];
-        s = s + mag(m) * r[j];
+      for (int j = 0; j < n; ++j) {
+        double p = 0.0, abs_m = 0.0, abs_r = 0.0;
+        for (int k = 0; k < n; ++k) {
+          const double y = Y[i * n + k];
+          p += y * Jm[k * n + j];
+          abs_m += std::abs(y) * std::abs(Jm[k * n + j]);
+          abs_r += std::abs(y) * Jr[k * n + j];
+        }
+        const double d = i == j ? 1.0 : 0.0;
+        const double bound = std::max(d - p, p - d) + abs_r + gamma * abs_m;
+        s += bound * r[j];
       }
       if (!std::isfinite(s) || !std::isfinite(a.lower()) || !std::isfinite(a.upper()))
         return Verdict::kUndecided;
@@ -97,6 +145,7 @@ struct Term {
   FI c;
   std::uint8_t degree = 0;
   std::array<std::uint8_t, kMaxMonomialDegree> vars{};
+  std::uint16_t monomial = 0;  // its index in the contractor's table of distinct monomials
 };
 using Equation = std::vector<Term>;
 
@@ -106,7 +155,8 @@ FI monomialValue(const Term& t, const FI* x) {
   for (int i = 0; i < t.degree;) {
     int j = i;
     while (j < t.degree && t.vars[j] == t.vars[i]) ++j;
-    v = v * (j - i == 1 ? x[t.vars[i]] : pow(x[t.vars[i]], j - i));
+    const int power = j - i;
+    v = v * (power == 1 ? x[t.vars[i]] : power == 2 ? square(x[t.vars[i]]) : pow(x[t.vars[i]], power));
     i = j;
   }
   return v;
@@ -145,6 +195,12 @@ class Contractor {
       equations_[shape.terms[t].equation].push_back(term);
     }
     if (!secondaries_.empty()) buildLinearRows();
+    for (Equation& e : equations_)
+      for (Term& t : e) intern(t);
+    for (LinearRow& row : rows_) {
+      for (Term& t : row.rest) intern(t);
+      for (auto& [j, t] : row.linear) intern(t);
+    }
   }
 
   // Contracts X by every contractor until they stop paying; false when X holds no root.
@@ -161,14 +217,33 @@ class Contractor {
   }
 
  private:
-  // x_i^k ∈ −(Σ others) / c for each term c x_i^k (k ≤ 2) alone in its variable.
+  // Each distinct monomial once over the box (the equations share most of them).
+  void evaluateMonomials(const Box& X) {
+    for (std::size_t i = 0; i < monomials_.size(); ++i)
+      monomial_values_[i] = monomialValue(monomials_[i], X.x);
+  }
+
+  void intern(Term& t) {
+    const std::uint32_t key = keyOf(t);
+    auto it = monomial_index_.find(key);
+    if (it == monomial_index_.end()) {
+      it = monomial_index_.emplace(key, static_cast<std::uint16_t>(monomials_.size())).first;
+      monomials_.push_back(t);
+      monomial_values_.emplace_back(0.0);
+    }
+    t.monomial = it->second;
+  }
+
+  // x_i^k ∈ −(Σ others) / c for each term c x_i^k (k ≤ 2) alone in its variable (the terms
+  // enclosed over the box as it was on entry: later projections only make them looser).
   bool project(Box& X) {
+    evaluateMonomials(X);
     for (const Equation& e : equations_) {
       const std::size_t T = e.size();
       values_.resize(T);
       before_.resize(T + 1);
       after_.resize(T + 1);
-      for (std::size_t t = 0; t < T; ++t) values_[t] = e[t].c * monomialValue(e[t], X.x);
+      for (std::size_t t = 0; t < T; ++t) values_[t] = e[t].c * monomial_values_[e[t].monomial];
       before_[0] = FI(0.0);
       for (std::size_t t = 0; t < T; ++t) before_[t + 1] = before_[t] + values_[t];
       if (before_[T].lower() > 0.0 || before_[T].upper() < 0.0) return false;
@@ -201,22 +276,29 @@ class Contractor {
   // Preconditioned interval Gauss-Seidel on the secondary variables, from the linear rows.
   bool gaussSeidel(Box& X) {
     const int m = static_cast<int>(secondaries_.size());
-    const int L = static_cast<int>(rows_.size());
+    const int L = std::min(static_cast<int>(rows_.size()), kMaxVariables);
     if (m == 0 || L < m) return true;
     std::vector<FI>& A = A_;
     A.assign(static_cast<std::size_t>(L) * m, FI(0.0));
     b_.assign(L, FI(0.0));
     RMat Am(L, m);
+    evaluateMonomials(X);
     for (int k = 0; k < L; ++k) {
-      for (const Term& t : rows_[k].rest) b_[k] = b_[k] + t.c * monomialValue(t, X.x);
+      for (const Term& t : rows_[k].rest) b_[k] = b_[k] + t.c * monomial_values_[t.monomial];
       for (const auto& [j, t] : rows_[k].linear)
-        A[k * m + j] = A[k * m + j] + t.c * monomialValue(t, X.x);
+        A[k * m + j] = A[k * m + j] + t.c * monomial_values_[t.monomial];
       for (int j = 0; j < m; ++j) Am(k, j) = midpoint(A[k * m + j]);
     }
     if (!Am.allFinite()) return true;
-    // Y ≈ pseudo-inverse of mid A: Y A ≈ I.
-    const RMat normal = Am.transpose() * Am;
-    const RMat Y = Eigen::PartialPivLU<RMat>(normal).inverse() * Am.transpose();
+    // Y ≈ pseudo-inverse of mid A, (AᵀA)⁻¹ Aᵀ: Y A ≈ I.
+    double normal[kMaxVariables * kMaxVariables], inverse[kMaxVariables * kMaxVariables];
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) normal[i * m + j] = Am.col(i).dot(Am.col(j));
+    if (!invert(normal, m, inverse)) return true;
+    const RMat Y = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                                  Eigen::RowMajor, kMaxVariables, kMaxVariables>>(
+                       inverse, m, m) *
+                   Am.transpose();
     if (!Y.allFinite()) return true;
     for (int j = 0; j < m; ++j) {
       FI r(0.0);
@@ -332,7 +414,9 @@ class Contractor {
   std::map<int, int> index_of_;
   std::vector<Equation> equations_;
   std::vector<LinearRow> rows_;
-  std::vector<FI> values_, before_, after_, A_, b_;
+  std::vector<Term> monomials_;  // distinct monomials (their coefficients unused)
+  std::map<std::uint32_t, std::uint16_t> monomial_index_;
+  std::vector<FI> monomial_values_, values_, before_, after_, A_, b_;
 };
 
 Box boxOf(const RealBox& b, int n) {

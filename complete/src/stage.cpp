@@ -2,7 +2,9 @@
 // check each against every input constraint, and say whether the list is proven complete.
 #include "relpos/complete/stage.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 #include <utility>
 
 #include "relpos/complete/fiber.hpp"
@@ -97,9 +99,16 @@ bool traceTestedCount(const Family& family) {
   return start && start->check.find("+trace") != std::string::npos;
 }
 
-FiberOptions fiberOptions(const StageOptions& options) {
+// The fiber's options for a family of `roots` roots: threads only where there are paths enough
+// to share (starting a thread costs tens of microseconds).
+FiberOptions fiberOptions(const StageOptions& options, const Family& family) {
   FiberOptions o;
   o.compute_start_system = options.compute_start_systems;
+  const StartSystem* start = findStartSystem(family, false);
+  const int threads =
+      options.threads > 0 ? options.threads
+                          : std::min(2, static_cast<int>(std::thread::hardware_concurrency()));
+  if (start && start->roots.size() >= 16) o.threads = std::max(1, threads);
   return o;
 }
 
@@ -143,7 +152,7 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
     PoseEncoding e;
     if (!encodePose(problem, chart, &e, why, alternative)) return false;
     const PoseFamily family(e.equations, static_cast<int>(e.target.size()));
-    FiberResult r = solveFiber(family, e.target, fiberOptions(options));
+    FiberResult r = solveFiber(family, e.target, fiberOptions(options, family));
     if (r.start_system_missing) {
       *why = noStoredStartSystem(family);
       return false;
@@ -236,7 +245,7 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
   if (!encodeLine(problem, tol, &enc, why)) return false;
   const LineFamily family(enc.equations, static_cast<int>(enc.target.size()));
   report.signature = family.signature();
-  const FiberResult fiber = solveFiber(family, enc.target, fiberOptions(options));
+  const FiberResult fiber = solveFiber(family, enc.target, fiberOptions(options, family));
   if (fiber.start_system_missing) {
     *why = noStoredStartSystem(family);
     return false;
