@@ -383,8 +383,46 @@ MatchResult oneVectorTwoRanges(MatchContext& ctx, Fundamental f, Fundamental g,
   return MatchResult::kMatched;
 }
 
-// Angle constraints with a range (issue 16): one alone, a parallelism and a range, or two on one
-// mobile vector; other combinations are left to other matchers (and then the numeric stage).
+// An exact angle (not a parallelism) and a range on another mobile vector: R = R(u_f, φ) R0
+// R(u_m, θ) with θ on the arcs where the range holds, φ where they exist. The angle γ(φ) of the
+// cone's direction R u_m from v_f decides: the range [lo, hi] is reachable by a spin about it
+// iff |γ − σ_m| ≤ hi and min(γ + σ_m, 2π − γ − σ_m) ≥ lo, σ_m = angle(u_m, v_m) — a band of cos γ,
+// which is a sinusoid in φ.
+MatchResult angleWithRange(MatchContext& ctx, const Angle& a, const Fundamental& range,
+                           RotationAlternatives& out) {
+  const Tolerance tol = ctx.tol.widened(a.err + range.err);
+  const rotation::OneAngle cone(a.u_m, a.u_f, a.alpha);
+  const double sigma_m = angleBetween(a.u_m, range.p);
+  const double gamma_lo = std::max({0.0, sigma_m - range.hi, range.lo - sigma_m});
+  const double gamma_hi = std::min({kPi, sigma_m + range.hi, 2.0 * kPi - sigma_m - range.lo});
+  const SourceMask both = a.sources | range.sources;
+  const char* why = "an angle and an angle range on another vector that no rotation meets together";
+  if (gamma_lo > gamma_hi + tol.angle) return inconsistent(ctx, both, why);
+  const Sinusoid s = spunDot(a.u_f, cone.R0 * a.u_m, range.q);
+  const double lo = std::cos(gamma_hi), hi = std::cos(gamma_lo);
+  PhiIntervals iv;
+  if (s.amp <= tol.angle) {  // γ the same for every φ
+    if (s.h0 < lo - tol.angle || s.h0 > hi + tol.angle) return inconsistent(ctx, both, why);
+    iv.iv[iv.count++] = {-kPi, kPi, true};
+  } else {
+    iv = bandIntervals(s.h0, s.amp, s.phi0, lo, hi, tol);
+  }
+  if (iv.count == 0) return inconsistent(ctx, both, why);
+  for (int k = 0; k < iv.count; ++k)
+    for (double sign : {1.0, -1.0}) {
+      rotation::AngleWithRange r(a.u_m, a.u_f, a.alpha, range.p, range.q, range.lo, range.hi);
+      r.sign = sign;
+      r.phi_lo = iv.iv[k].lo;
+      r.phi_hi = iv.iv[k].hi;
+      r.phi_periodic = iv.iv[k].periodic;
+      out.add(r, a.err + range.err);
+    }
+  return MatchResult::kMatched;
+}
+
+// Angle constraints with a range (issue 16): one alone, a parallelism and a range, two on one
+// mobile vector, or an exact angle and a range on another; other combinations are left to
+// other matchers (and then the numeric stage).
 MatchResult matchRanged(MatchContext& ctx, RotationAlternatives& out) {
   const auto& rs = ctx.set.rotational;
   if (rs.size() == 1) {
@@ -411,6 +449,7 @@ MatchResult matchRanged(MatchContext& ctx, RotationAlternatives& out) {
   }
   if (f.p.cross(g.p).norm() <= ctx.tol.widened(f.err + g.err).angle)
     return oneVectorTwoRanges(ctx, f, g, out);
+  if (f.exact()) return angleWithRange(ctx, normalise(f, ctx.tol), g, out);
   return MatchResult::kNoMatch;
 }
 

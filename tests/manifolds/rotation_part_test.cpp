@@ -212,6 +212,42 @@ TEST(RotationPart, TwoAngleRangesHoldEveryDirectionInBothBands) {
   EXPECT_EQ(checked, 300);
 }
 
+// An exact angle and a range on another vector: every (φ, t) of the box keeps the first angle
+// exact and the second within its range (both signs), and the projection round-trips.
+TEST(RotationPart, AngleWithRangeMeetsBothAndProjectsBack) {
+  Rng rng(14);
+  int checked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
+    const Matrix3d R_true = rng.pose().linear();
+    const double alpha = angleBetween(R_true * um, uf), beta = angleBetween(R_true * vm, vf);
+    const double lo = std::max(0.0, beta - rng.uniform(0.05, 0.5));
+    const double hi = std::min(kPi, beta + rng.uniform(0.05, 0.5));
+    for (double sign : {1.0, -1.0}) {
+      rotation::AngleWithRange shape(um, uf, alpha, vm, vf, lo, hi);
+      shape.sign = sign;
+      const RotationPart r = shape;
+      for (int k = 0; k < 5; ++k) {
+        double t[2] = {rng.uniform(-kPi, kPi), rng.uniform(0.0, 1.0)}, back[2];
+        double theta0, in, out;
+        shape.arc(t[0], &theta0, &in, &out);
+        const Matrix3d R = r.rotation(t);
+        EXPECT_NEAR(angleBetween(R * um, uf), alpha, 1e-7);
+        // Where the range is reachable at this φ (the matcher keeps only those φ), it holds.
+        if (std::cos(in) >= std::cos(out) + 1e-9) {
+          const double b = angleBetween(R * vm, vf);
+          EXPECT_GE(b, lo - 1e-7);
+          EXPECT_LE(b, hi + 1e-7);
+          r.project(R, back);
+          EXPECT_LT(rotationDistance(r.rotation(back), R), 1e-6) << "i " << i;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 500);
+}
+
 TEST(RotationPart, FixedIsTheNearestRotationAndHasNoParameters) {
   Rng rng(6);
   const Matrix3d R = rng.pose().linear();

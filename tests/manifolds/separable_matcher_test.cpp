@@ -279,6 +279,30 @@ TEST(SeparableMatcher, RangesNoRotationMeetsAreInconsistent) {
   EXPECT_EQ(match(axis).result, MatchResult::kInconsistent);
 }
 
+// An exact angle and a range on another vector (a jaw across a can's axis, the approach within
+// 30° of vertical): the cone's spin on arcs, φ where they exist (AngleWithRange).
+TEST(SeparableMatcher, AnAngleAndARangeOnAnotherVectorHoldEveryRotationInBoth) {
+  Rng rng(23);
+  for (int i = 0; i < 100; ++i) {
+    const Matrix3d R = rng.pose().linear();
+    const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
+    const double a = angleBetween(R * um, uf), b = angleBetween(R * vm, vf);
+    if (a < 0.05 || a > kPi - 0.05) continue;  // a parallelism: another case
+    ConstraintSet set;
+    set.add(Fundamental::angle(um, uf, a, 1));
+    set.add(angleRange(vm, vf, b - rng.uniform(0, 0.4), b + rng.uniform(0.01, 0.4), 2));
+    expectRangedSet(set, R, "AngleWithRange", rng);
+  }
+  // z at 90° from z never brings x within 10° of z... unless x turns up: it does (x can be z).
+  // z at 30° from z keeps x at least 60° from z: a range of 0-20° is out of reach.
+  ConstraintSet set;
+  set.add(Fundamental::angle(Vector3d::UnitZ(), Vector3d::UnitZ(), 0.5236, 1));
+  set.add(angleRange(Vector3d::UnitX(), Vector3d::UnitZ(), 0.0, 0.35, 2));
+  MatchRun run = match(set);
+  EXPECT_EQ(run.result, MatchResult::kInconsistent);
+  EXPECT_EQ(run.conflict, SourceMask{3});
+}
+
 // Two ranges on different mobile vectors have no closed form yet: left to others.
 TEST(SeparableMatcher, TwoRangesOnTwoVectorsAreLeftToOthers) {
   ConstraintSet set;

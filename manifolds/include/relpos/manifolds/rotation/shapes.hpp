@@ -4,6 +4,7 @@
 // (catalogue.cpp) and every std::visit pick it up from here. The order is the catalogue's.
 #include <variant>
 
+#include "relpos/manifolds/rotation/angle_with_range.hpp"
 #include "relpos/manifolds/rotation/fixed.hpp"
 #include "relpos/manifolds/rotation/free.hpp"
 #include "relpos/manifolds/rotation/one_angle.hpp"
@@ -20,6 +21,7 @@ using RotationShape = std::variant<rotation::Fixed,        //
                                    rotation::TwoAngle,     //
                                    rotation::Free,         //
                                    rotation::OneAngleRange,  //
-                                   rotation::TwoAngleRange>;
+                                   rotation::TwoAngleRange,  //
+                                   rotation::AngleWithRange>;
 
 }  // namespace relpos::manifolds
