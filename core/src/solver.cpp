@@ -9,6 +9,7 @@
 #include "branch_check.hpp"
 #include "centring.hpp"
 #include "fallback.hpp"
+#include "unmatched_hint.hpp"
 #include "relpos/core/branch_sink.hpp"
 
 namespace relpos {
@@ -51,6 +52,7 @@ struct SolveState {
   bool any_unhandled = false;
   bool deferred = false;    // a rule waited for better-conditioned pairs (RuleOutput::defer)
   bool last_round = false;  // combining what waited (combineInRounds)
+  const Problem* problem = nullptr;  // what the sets came from (null: solveConstraintSet)
 };
 
 void setUnhandled(SolveState& st, const std::string& why) {
@@ -77,6 +79,14 @@ bool guarded(SolveState& st, Call&& call, Item&& item) {
   return false;
 }
 
+// Every input constraint a set's fundamentals came from.
+SourceMask sourcesOf(const ConstraintSet& set) {
+  SourceMask m = 0;
+  for (const Fundamental& f : set.translational) m |= f.sources;
+  for (const Fundamental& f : set.rotational) m |= f.sources;
+  return m;
+}
+
 std::string describeSet(const ConstraintSet& set) {
   std::string s;
   auto list = [&s](const char* title, const auto& v) {
@@ -86,7 +96,10 @@ std::string describeSet(const ConstraintSet& set) {
       s += i ? ", " : " ";
       s += toString(v[i].kind);
       char buf[64];
-      std::snprintf(buf, sizeof buf, " %.6g", v[i].value());
+      if (v[i].exact())
+        std::snprintf(buf, sizeof buf, " %.6g", v[i].value());
+      else
+        std::snprintf(buf, sizeof buf, " %.6g..%.6g", v[i].lo, v[i].hi);
       s += buf;
       s += " (from constraint";
       for (int k = 0; k < 64; ++k)
@@ -459,7 +472,15 @@ void runPending(SolveState& st) {
     }
     if (st.any_unhandled) break;  // a matcher threw, or made an unusable branch
     if (r == MatchResult::kNoMatch) {
-      setUnhandled(st, "no solution manifold matches the combined constraints:" + describeSet(set));
+      // Which input constraints, in the spec's terms, and what might be changed (issue 16); then
+      // the combined set itself.
+      std::string why = "no solution manifold matches the combined constraints";
+      if (st.problem)
+        why += " " + detail::explainUnmatched(*st.problem, st.registry, sourcesOf(set)) +
+               " Combined set:";
+      else
+        why += ":";
+      setUnhandled(st, why + describeSet(set));
       break;
     }
     if (r == MatchResult::kOverflow) {
@@ -508,6 +529,7 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
   prepare(options, ws, solution);
   shareRegistryData(registry, solution);
   SolveState st{registry, options, Tolerance(), ws, solution, 0, "", std::string(), false};
+  st.problem = &problem;
   std::string why;
   detail::Centring frame;
   if (!options.isValid(&why)) {

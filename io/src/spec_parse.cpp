@@ -607,6 +607,7 @@ class Parser {
     Problem& pb = problem_;
     pb.name = out_.name;
     if (f[kUnits].present()) units(f[kUnits]);
+    pb.angles_in_degrees = deg_;
     const Json &fixed = f[kFixed], &mobile = f[kMobile], &obstacles = f[kObstacles],
                &plugins = f[kPlugins], &constraints = f[kConstraints];
     if (!fixed.present()) error("fixed", "missing");

@@ -345,6 +345,18 @@ TEST(Stage, Deterministic) {
   }
 }
 
+// Coordinates beyond 1e100 (found by the mutation campaign: a plane distance of 3e154): the poses'
+// squared distances would overflow, so the stage declines, as the rules do.
+TEST(Stage, DeclinesHugeCoordinates) {
+  std::mt19937_64 rng(45);
+  const Problem p = test::scaledAndMoved(test::sixSix(rng, randomPose(rng)), 1e120,
+                                         Vector3d::Zero(), Vector3d::Zero());
+  Solution s;
+  EXPECT_FALSE(solveComplete(p, builtinRegistry(), toleranceOf(p), s));
+  EXPECT_NE(s.message.find("beyond 1e100"), std::string::npos) << s.message;
+  EXPECT_TRUE(s.branches.empty());
+}
+
 TEST(Stage, DeclinesWithAReason) {
   std::mt19937_64 rng(37);
   Problem p = test::sixSix(rng, randomPose(rng));

@@ -44,6 +44,9 @@ struct InputConstraint {
 
 struct Problem {
   std::string name;
+  // The spec gave its angles in degrees (`"units": {"angle": "deg"}`): values are stored in
+  // radians, and messages that quote them convert back (added for issue 16).
+  bool angles_in_degrees = false;
   ObjectSpec fixed;
   ObjectSpec mobile;
   std::vector<ObjectSpec> obstacles;
