@@ -661,6 +661,98 @@ bool matchBoundedCylinder(const ConstraintSet& set, const Tolerance& tol,
   return true;
 }
 
+// Two translational constraints on different mobile points a and b whose shapes in translation
+// space (T = X − R p) meet only for some rotations (issue 16): a sphere and a sphere, or a sphere
+// and a plane. Their centres (and the plane's offset) move with R C, C the mobile vector from a's
+// point to b's, so they meet exactly where the angle of R C from a fixed direction lies in a band:
+// an implicit angle range. The set is then the rotations meeting it and the rotational
+// constraints together, and for each the circle where the shapes meet.
+enum class Meet { kNever, kSome, kAlways, kNotThisCase };
+
+Meet circleCondition(const Fundamental& a0, const Fundamental& b0, const Tolerance& tol,
+                     Fundamental* range, const Fundamental** sphere, const Fundamental** other) {
+  auto isSphere = [&](const Fundamental& f) {
+    return f.kind == FundamentalKind::kPointPoint && f.exact() && f.value() > tol.length;
+  };
+  auto isPlane = [](const Fundamental& f) {
+    return f.kind == FundamentalKind::kPointPlane && f.exact() && f.point_side == Side::kMobile;
+  };
+  const bool swap = !isSphere(a0);
+  const Fundamental& a = swap ? b0 : a0;
+  const Fundamental& b = swap ? a0 : b0;
+  if (!isSphere(a) || !(isSphere(b) || isPlane(b))) return Meet::kNotThisCase;
+  const Vector3d C = b.p - a.p;  // mobile
+  const double c = C.norm();
+  if (c <= tol.length) return Meet::kNotThisCase;  // one point: the shapes keep their relation
+  *sphere = &a;
+  *other = &b;
+  // u·R C ∈ [lo, hi] for a fixed unit u.
+  Vector3d u;
+  double lo, hi;
+  if (isSphere(b)) {
+    // |E − R C|² = |E|² + |C|² − 2 E·R C between (ra − rb)² and (ra + rb)², E = b.q − a.q.
+    const Vector3d E = b.q - a.q;
+    const double e = E.norm(), ra = a.value(), rb = b.value();
+    const double base = E.squaredNorm() + C.squaredNorm();
+    if (e <= tol.length) {
+      const double d2 = C.squaredNorm();
+      const bool meet = d2 >= (ra - rb) * (ra - rb) - tol.length * (ra + rb + c) &&
+                        d2 <= (ra + rb) * (ra + rb) + tol.length * (ra + rb + c);
+      return meet ? Meet::kAlways : Meet::kNever;
+    }
+    u = E / e;
+    lo = (base - (ra + rb) * (ra + rb)) / (2.0 * e);
+    hi = (base - (ra - rb) * (ra - rb)) / (2.0 * e);
+  } else {
+    // |n·(centre) − plane offset| ≤ ra: n·R C ∈ n·(b.q − a.q) ± ra.
+    u = b.d;
+    const double k = b.d.dot(b.q - a.q);
+    lo = k - a.value();
+    hi = k + a.value();
+  }
+  // cos of the angle of R Ĉ from u in [lo / c, hi / c].
+  const double slack = tol.length / c;
+  if (lo / c > 1.0 + slack || hi / c < -1.0 - slack) return Meet::kNever;
+  if (lo / c <= -1.0 && hi / c >= 1.0) return Meet::kAlways;
+  *range = Fundamental::angle(C / c, u, 0.0, a.sources | b.sources);
+  range->lo = std::acos(clampUnit(hi / c));
+  range->hi = std::acos(clampUnit(lo / c));
+  // The band's edges come from lengths known to the tolerance: seen from the points' span.
+  range->err = a.err + b.err + slack;
+  return Meet::kSome;
+}
+
+MatchResult matchCircle(MatchContext& ctx) {
+  const auto& ts = ctx.set.translational;
+  if (ts.size() != 2 || ctx.set.revolve) return MatchResult::kNoMatch;
+  Fundamental range;
+  const Fundamental *sphere = nullptr, *other = nullptr;
+  const Meet meet = circleCondition(ts[0], ts[1], ctx.tol, &range, &sphere, &other);
+  if (meet == Meet::kNotThisCase) return MatchResult::kNoMatch;
+  if (meet == Meet::kNever)
+    return inconsistent(ctx, ts[0].sources | ts[1].sources,
+                        "two distances on two mobile points that no rotation lets both hold");
+  ConstraintSet with_range = ctx.set;
+  if (meet == Meet::kSome) {
+    if (with_range.rotational.full()) return MatchResult::kNoMatch;
+    with_range.rotational.push_back(range);
+  }
+  MatchContext sub{with_range, ctx.tol, ctx.branches};
+  RotationAlternatives rots;
+  const MatchResult r = matchRotation(sub, rots);
+  if (r == MatchResult::kInconsistent) {
+    ctx.conflict = sub.conflict;
+    ctx.reason = sub.reason;
+  }
+  if (r != MatchResult::kMatched) return r;
+  translation::Circle circle(*sphere, *other);
+  // Touching shapes (r² − along² within what the tolerance leaves of it) are one point.
+  circle.snap_radius = std::sqrt(2.0 * sphere->value() * ctx.tol.length);
+  for (int k = 0; k < rots.size(); ++k)
+    if (!ctx.branches.add<SeparableManifold>(rots.parts[k], circle)) return MatchResult::kOverflow;
+  return MatchResult::kMatched;
+}
+
 bool hasKind(const ConstraintSet& set, FundamentalKind kind) {
   for (const auto& f : set.translational)
     if (f.kind == kind) return true;
@@ -682,6 +774,10 @@ MatchResult matchSeparable(MatchContext& ctx, const void* /*context*/) {
       (!matchTranslation(ctx.set, tol, rots, trans) &&
        !matchPlanes(ctx.set, tol, ctx.tol, rots, trans) &&
        !matchBoundedCylinder(ctx.set, tol, rots, trans))) {
+    if (!hasKind(ctx.set, FundamentalKind::kLineLine)) {
+      r = matchCircle(ctx);
+      if (r != MatchResult::kNoMatch) return r;
+    }
     r = detail::reanchorForEachRotation(ctx, rots);
     return r != MatchResult::kNoMatch ? r : detail::revolveForEachRotation(ctx, rots);
   }

@@ -303,6 +303,62 @@ TEST(SeparableMatcher, AnAngleAndARangeOnAnotherVectorHoldEveryRotationInBoth) {
   EXPECT_EQ(run.conflict, SourceMask{3});
 }
 
+// How far pose X breaks translational constraint f (a point-point distance, or a mobile point on
+// a fixed plane): 0 when it holds.
+double translationError(const Fundamental& f, const Isometry3d& X) {
+  const Vector3d p = X * f.p;
+  if (f.kind == FundamentalKind::kPointPoint) return std::abs((p - f.q).norm() - f.value());
+  return std::abs((p - f.q).dot(f.d));
+}
+
+// Two distances on two mobile points, or a distance and a point on a plane (a fingertip at a
+// reach and the other on the table): the rotations for which the spheres (sphere and plane) meet,
+// and the circle where they do (translation Circle); with a parallelism, the spin's arcs.
+TEST(SeparableMatcher, TwoMobilePointsOnSpheresOrAPlaneGiveACircle) {
+  Rng rng(24);
+  int banded = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Isometry3d X = rng.pose();
+    const Vector3d p1 = rng.point(), p2 = rng.point(), a = rng.point();
+    ConstraintSet set;
+    const Fundamental f1 = Fundamental::pointPoint(p1, a, (X * p1 - a).norm(), 1);
+    Fundamental f2;
+    if (i % 2 == 0) {
+      const Vector3d b = rng.point();
+      f2 = Fundamental::pointPoint(p2, b, (X * p2 - b).norm(), 2);
+    } else {
+      const Vector3d n = rng.unit();
+      f2 = Fundamental::pointPlane(Side::kMobile, p2, X * p2, n, 0.0, 2);
+    }
+    set.add(f1);
+    set.add(f2);
+    if (i % 4 == 1) set.add(Fundamental::angle(Vector3d::UnitZ(), X.linear().col(2), 0.0, 4));
+    MatchRun run = match(set);
+    ASSERT_EQ(run.result, MatchResult::kMatched) << "i " << i;
+    double nearest = 1e9;
+    for (const Branch& b : run.out.branches) {
+      const Manifold& m = *b.manifold;
+      EXPECT_NE(m.describe().find("translation Circle"), std::string::npos) << m.describe();
+      banded += m.describe().find("rotation Free") == std::string::npos;
+      for (int k = 0; k < 10; ++k) {
+        const Isometry3d Y = m.pose(middleParams(m, rng));
+        EXPECT_LT(translationError(f1, Y), 1e-9) << "i " << i;
+        EXPECT_LT(translationError(f2, Y), 1e-9) << "i " << i;
+      }
+      nearest = std::min(nearest, poseDistance(m.pose(m.project(X)), X));
+    }
+    EXPECT_LT(nearest, 1e-7) << "the pose the set was built around is on no branch, i " << i;
+  }
+  EXPECT_GT(banded, 50);
+  // Spheres 0.1 about points 5 apart, on mobile points 1 apart: they never meet.
+  ConstraintSet never;
+  never.add(Fundamental::pointPoint(Vector3d::Zero(), Vector3d::Zero(), 0.1, 1));
+  never.add(Fundamental::pointPoint(Vector3d::UnitX(), Vector3d(5, 0, 0), 0.1, 2));
+  MatchRun run = match(never);
+  EXPECT_EQ(run.result, MatchResult::kInconsistent);
+  EXPECT_EQ(run.conflict, SourceMask{3});
+}
+
 // Two ranges on different mobile vectors have no closed form yet: left to others.
 TEST(SeparableMatcher, TwoRangesOnTwoVectorsAreLeftToOthers) {
   ConstraintSet set;

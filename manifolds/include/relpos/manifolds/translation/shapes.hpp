@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "relpos/manifolds/translation/bounded_cylinder.hpp"
+#include "relpos/manifolds/translation/circle.hpp"
 #include "relpos/manifolds/translation/cylinder.hpp"
 #include "relpos/manifolds/translation/ellipse.hpp"
 #include "relpos/manifolds/translation/free.hpp"
@@ -34,6 +35,7 @@ using TranslationShape = std::variant<translation::Free,              //
                                       translation::ThickCylinder,     //
                                       translation::Slab,              //
                                       translation::Planes,            //
-                                      translation::BoundedCylinder>;
+                                      translation::BoundedCylinder,   //
+                                      translation::Circle>;
 
 }  // namespace relpos::manifolds
