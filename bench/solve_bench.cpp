@@ -1,5 +1,7 @@
 // solve() on every bundled example (each single-constraint kind, the PMF worked example, the
-// two-constraint cases, PMF's assembly task) and on data/bench (five constraints, 16 branches),
+// two-constraint cases, PMF's assembly task), on data/bench (five constraints, 16 branches) and
+// on the engineers' tasks of data/tasks (closed forms, and charts where the rules leave them:
+// the label says which),
 // into a reused Workspace and Solution as a control loop would call it; and the nearest-pose
 // query on the worked example.
 //   build/bench/relpos_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -31,7 +33,9 @@ void BM_Solve(benchmark::State& state, const std::string& file) {
     benchmark::DoNotOptimize(s.branches.data());
   }
   state.counters["branches"] = static_cast<double>(s.branches.size());
-  state.SetLabel(relpos::toString(s.status));
+  const bool numeric = std::any_of(s.branches.begin(), s.branches.end(),
+                                   [](const relpos::Branch& b) { return !b.exact; });
+  state.SetLabel(std::string(relpos::toString(s.status)) + (numeric ? " (numeric stage)" : ""));
 }
 
 void BM_NearestWorkedExample(benchmark::State& state) {
@@ -47,9 +51,11 @@ BENCHMARK(BM_NearestWorkedExample);
 int registerExamples() {
   std::vector<std::string> files;
   for (const char* dir :
-       {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench", RELPOS_DATA_DIR "/scenarios"})
+       {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench", RELPOS_DATA_DIR "/scenarios",
+        RELPOS_DATA_DIR "/tasks"})
     for (const auto& e : std::filesystem::directory_iterator(dir))
-      if (e.path().extension() == ".json") files.push_back(e.path().string());
+      if (e.path().extension() == ".json" && e.path().filename() != "expected.json")
+        files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   for (const auto& f : files)
     benchmark::RegisterBenchmark(("solve/" + std::filesystem::path(f).stem().string()).c_str(),

@@ -7,8 +7,13 @@ namespace {
 
 bool answer(const Problem& problem, const Registry& registry, const Tolerance& tol,
             Solution& solution, const void* context) {
-  return solveComplete(problem, registry, tol, solution, nullptr,
-                       *static_cast<const StageOptions*>(context));
+  const auto& options = *static_cast<const StageOptions*>(context);
+  if (solveComplete(problem, registry, tol, solution, nullptr, options)) return true;
+  // What the polynomial stage does not take (ranges, sets of poses) or could not answer: charts.
+  const std::string declined = solution.message;
+  if (solveSets(problem, registry, tol, solution, options)) return true;
+  solution.message = declined + "; " + solution.message;
+  return false;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "relpos/complete/fiber.hpp"
 #include "relpos/complete/problem_encoding.hpp"
+#include "pose_conditions.hpp"
 #include "real_root_proof.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/manifolds/rotation/fixed.hpp"
@@ -281,22 +282,6 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
   return true;
 }
 
-// The largest magnitude of the problem's coordinates and values as placed (the fixed frame's
-// placement included), and of the mobile object's initial pose: beyond 1e100 a pose's squared
-// distances overflow, as the rules' own check says (core/src/centring.cpp).
-double largestMagnitude(const Problem& p) {
-  double m = std::max(p.fixed.pose.translation().cwiseAbs().maxCoeff(),
-                      p.mobile.pose.translation().cwiseAbs().maxCoeff());
-  for (const InputConstraint& c : p.constraints) {
-    const Feature f = c.fixed.placed(p.fixed.pose);
-    for (const Feature* x : {&f, &c.mobile}) m = std::max(m, x->point.cwiseAbs().maxCoeff());
-    for (double v : {c.value, c.min, c.max})
-      if (std::isfinite(v)) m = std::max(m, std::abs(v));
-      else if (std::isnan(v)) return v;
-  }
-  return m;
-}
-
 bool decline(Solution& solution, const std::string& why) {
   solution.message = why;
   return false;
@@ -310,7 +295,7 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
   StageReport& rep = report ? *report : local;
   rep = StageReport{};
   if (problem.constraints.empty()) return decline(solution, "no constraints");
-  if (!(largestMagnitude(problem) <= 1e100))
+  if (!(detail::largestMagnitude(problem) <= 1e100))
     return decline(solution, "coordinates or values beyond 1e100 (or not numbers): scale the problem");
   for (const InputConstraint& c : problem.constraints) {
     const ConstraintType* t = registry.constraintType(c.type);

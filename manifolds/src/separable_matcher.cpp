@@ -105,8 +105,16 @@ PhiIntervals bandIntervals(double h0, double amp, double phi0, double lo, double
   const double U = (hi - h0) / amp;
   const double eps = tol.angle / amp;
   if (L > 1.0 + eps || U < -1.0 - eps) return out;
-  const double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
-  const double psi_out = std::acos(clampUnit(L));  // |φ − φ0| <= psi_out
+  double psi_in = std::acos(clampUnit(U));   // |φ − φ0| >= psi_in
+  double psi_out = std::acos(clampUnit(L));  // |φ − φ0| <= psi_out
+  // The band's edge at the sinusoid's top (bottom) within the tolerance, measured as angles (the
+  // values are cosines): the arc excluded about it holds only poses within tol.angle of the range,
+  // and its width, the square root of the cosines' rounding, would split one arc in two (measured:
+  // an angle range [0, 45°] about a spin axis across it, 4e-8 rad apart in a world moved 1e6).
+  if (std::abs(h0) + amp <= 1.0 + 1e-12) {
+    if (std::acos(clampUnit(hi)) - std::acos(clampUnit(h0 + amp)) <= tol.angle) psi_in = 0.0;
+    if (std::acos(clampUnit(h0 - amp)) - std::acos(clampUnit(lo)) <= tol.angle) psi_out = kPi;
+  }
   if (psi_in <= tol.angle && psi_out >= kPi - tol.angle) {
     out.iv[out.count++] = {-kPi, kPi, true};
   } else if (psi_in <= tol.angle) {

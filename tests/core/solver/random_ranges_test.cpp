@@ -62,10 +62,13 @@ TEST(RandomRanges, PairsWithRanges) {
         ASSERT_NE(s.status, Status::kInconsistent) << s.message;
         if (s.status != Status::kSolved) continue;
         ++solved;
-        EXPECT_TRUE(someBranchContains(s, kp.X_WM_star))
-            << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
         std::string where;
         EXPECT_LT(worstSampledViolation(kp.problem, s, 16, 700 + total, &where), 1e-8) << where;
+        // An answer not proven complete (the numeric stage's charts, docs/spec.md §8.7) may miss
+        // the known pose: each of its branches is checked above, its list need not be whole.
+        if (!s.complete) continue;
+        EXPECT_TRUE(someBranchContains(s, kp.X_WM_star))
+            << describeBranches(s) << "\nknown pose " << poseText(kp.X_WM_star);
         if (!grid) {
           // The branch through the known pose has the local dimension there (ranges inactive
           // inside their bounds), measured independently.

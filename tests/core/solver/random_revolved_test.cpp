@@ -133,10 +133,12 @@ TEST(RandomRevolved, TurnsAboutAFixedAxisWithSymmetricPositions) {
         EXPECT_EQ(br.manifold->rotationalDof(), -1);
         break;
       }
-    EXPECT_TRUE(someBranchContains(s, b.X))
-        << describeBranches(s) << "\nknown pose " << poseText(b.X);
     std::string where;
     EXPECT_LT(worstSampledViolation(b.p, s, 16, 900 + k, &where), 1e-8) << where;
+    // The numeric stage's charts (docs/spec.md §8.7) need not hold the known pose.
+    if (!s.complete) continue;
+    EXPECT_TRUE(someBranchContains(s, b.X))
+        << describeBranches(s) << "\nknown pose " << poseText(b.X);
     EXPECT_EQ(dofOfBranchesContaining(s, b.X), localDof(b.p, b.X)) << describeBranches(s);
     ++dof_checked;
   }

@@ -54,6 +54,10 @@ struct StageOptions {
   // two cores or more). The answer is the same for every value; the 6-6 platform's 40 paths take
   // 5.8 ms on one thread and 3.3 ms on two.
   int threads = 0;
+  // Sets of poses (solveSets): the start poses per alternative of the constraints (the mobile
+  // object's own, then seeded random ones) and the most charts (branches) an answer holds.
+  int set_starts = 12;
+  int max_charts = 8;
 };
 
 // Applies when every constraint is a built-in type with an exact value that the encodings take
@@ -67,5 +71,14 @@ struct StageOptions {
 bool solveComplete(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution, StageReport* report = nullptr,
                    const StageOptions& options = StageOptions());
+
+// What solveComplete does not take: any built-in constraints, exact or ranges, whose poses form
+// sets (or isolated poses) found by descent from StageOptions::set_starts starts. Each pose found
+// where the equations are independent and every range holds strictly becomes a certified chart
+// (docs/spec.md §8.7): a branch of the set's local dimension, exact = false, its certificate the
+// chart's slice. solved with the charts found, never complete (a component may be missed, or
+// covered in part); false with the reason when none is found (never inconsistent).
+bool solveSets(const Problem& problem, const Registry& registry, const Tolerance& tol,
+               Solution& solution, const StageOptions& options = StageOptions());
 
 }  // namespace relpos::complete

@@ -1,0 +1,111 @@
+#include "point_search.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "chart.hpp"
+
+namespace relpos::complete::detail {
+namespace {
+
+// How far into a range the descent aims: its inner half (a one-sided range: this far past its
+// bound, in the normalised units).
+constexpr double kShrink = 0.25;
+constexpr double kOneSided = 0.05;
+
+struct Residuals {
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J;
+  double cost = 0.0;
+};
+
+double innerLo(const Condition& c) {
+  if (!std::isfinite(c.lo)) return c.lo;
+  return std::isfinite(c.hi) ? c.lo + kShrink * (c.hi - c.lo) : c.lo + kOneSided;
+}
+double innerHi(const Condition& c) {
+  if (!std::isfinite(c.hi)) return c.hi;
+  return std::isfinite(c.lo) ? c.hi - kShrink * (c.hi - c.lo) : c.hi - kOneSided;
+}
+
+// The residuals at coordinates y about (R0, t0), the conditions already in that base frame.
+void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& in,
+               const Vector6d& y, bool with_jacobian, Residuals* out) {
+  std::array<Dual<double>, 6> yd;
+  for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
+  const LocalPose<Dual<double>> X(yd);
+  const auto n = static_cast<Eigen::Index>(eq.size() + in.size());
+  out->r.setZero(n);
+  if (with_jacobian) out->J.setZero(n, 6);
+  Eigen::Index row = 0;
+  auto put = [&](const Dual<double>& g, double excess) {
+    out->r[row] = excess;
+    if (with_jacobian && excess != 0.0)
+      for (int j = 0; j < 6; ++j) out->J(row, j) = g.g[j];
+    ++row;
+  };
+  for (const Condition& c : eq) {
+    const Dual<double> g = evaluate(c, X);
+    put(g, g.v - c.lo);
+  }
+  for (const Condition& c : in) {
+    const Dual<double> g = evaluate(c, X);
+    const double lo = innerLo(c), hi = innerHi(c);
+    put(g, g.v < lo ? g.v - lo : (g.v > hi ? g.v - hi : 0.0));
+  }
+  out->cost = out->r.squaredNorm();
+}
+
+bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t) {
+  std::vector<Condition> eq, in;
+  for (const Condition& c : s.equations) eq.push_back(inBaseFrame(c, R, t));
+  for (const Condition& c : s.inequalities) in.push_back(inBaseFrame(c, R, t));
+  const std::array<double, 6> y{};
+  const LocalPose<double> X(y);
+  for (const Condition& c : eq)
+    if (!(std::abs(evaluate(c, X) - c.lo) <= 1e-12)) return false;
+  for (const Condition& c : in) {
+    const double g = evaluate(c, X);
+    if (!(c.lo < g && g < c.hi)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
+  double lambda = 1e-3;
+  std::vector<Condition> eq, in;
+  Residuals cur, trial;
+  auto rebase = [&] {
+    eq.clear(), in.clear();
+    for (const Condition& c : s.equations) eq.push_back(inBaseFrame(c, *R, *t));
+    for (const Condition& c : s.inequalities) in.push_back(inBaseFrame(c, *R, *t));
+    residuals(eq, in, Vector6d::Zero(), true, &cur);
+  };
+  rebase();
+  for (int it = 0; it < 200 && cur.cost > 1e-30; ++it) {
+    const Matrix6d JtJ = cur.J.transpose() * cur.J;
+    const Vector6d g = cur.J.transpose() * cur.r;
+    Matrix6d A = JtJ;
+    A.diagonal().array() += lambda * (1.0 + JtJ.diagonal().array());
+    const Vector6d step = -A.ldlt().solve(g);
+    if (!step.allFinite()) return false;
+    residuals(eq, in, step, false, &trial);
+    if (trial.cost < cur.cost) {
+      Matrix3d R2;
+      Vector3d t2;
+      poseAt(*R, *t, step, &R2, &t2);
+      *R = Eigen::Quaterniond(R2).normalized().toRotationMatrix(), *t = t2;
+      rebase();
+      lambda = std::max(lambda / 3.0, 1e-12);
+    } else {
+      lambda *= 4.0;
+      if (lambda > 1e12) break;
+    }
+    if (step.norm() < 1e-15) break;
+  }
+  return holds(s, *R, *t);
+}
+
+}  // namespace relpos::complete::detail

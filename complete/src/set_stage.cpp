@@ -1,0 +1,157 @@
+// solveSets (stage.hpp): what the polynomial stage does not take — ranges, sets of poses — found
+// by local descent from many starts and answered with certified charts (docs/spec.md §8.7).
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "chart_manifold.hpp"
+#include "point_search.hpp"
+#include "relpos/complete/stage.hpp"
+
+namespace relpos::complete {
+namespace {
+
+using detail::Chart;
+using detail::ChartData;
+using detail::ChartManifold;
+using detail::ConditionSystem;
+
+// The last check's bound (docs/spec.md §6.5).
+constexpr double kCheckTolerances = 10.0;
+// A chart's first box and the largest it may grow to (normalised coordinates: the quaternion's
+// vector part, a turn of about 150° at 4; lengths over the problem's size).
+constexpr double kFirstBox = 1e-3;
+constexpr double kLargestBox = 4.0;
+
+double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                      const Isometry3d& X) {
+  double worst = 0.0;
+  for (const InputConstraint& c : problem.constraints) {
+    const ConstraintType* t = registry.constraintType(c.type);
+    if (!t || !t->violation) return std::numeric_limits<double>::infinity();
+    const double v =
+        t->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X), tol, t->context);
+    if (!(v <= worst)) worst = std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+  }
+  return worst;
+}
+
+// Whether pose (R, t) is already a pose of one of `charts`, inside its box.
+bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const Matrix3d& R,
+             const Vector3d& t) {
+  for (const auto& c : charts) {
+    const std::array<double, 6> th = detail::chartProject(c->chart, R, t);
+    Matrix3d R2;
+    Vector3d t2;
+    detail::chartPose(c->chart, th, &R2, &t2);
+    if ((t2 - t).norm() + (R2 - R).norm() < 1e-7) return true;
+  }
+  return false;
+}
+
+// The chart's poses at its centre and at both ends of every axis of its box, checked against
+// every input constraint (the proof says they hold; this is the solver's own check of it).
+bool verified(const ChartManifold& m, const Problem& problem, const Registry& registry,
+              const Tolerance& tol) {
+  Params theta{};
+  if (!(worstViolation(problem, registry, tol, m.pose(theta)) <= kCheckTolerances)) return false;
+  for (int j = 0; j < m.dof(); ++j)
+    for (double s : {-1.0, 1.0}) {
+      Params th{};
+      th[j] = s * m.parameter(j).max;
+      if (!(worstViolation(problem, registry, tol, m.pose(th)) <= kCheckTolerances)) return false;
+    }
+  return true;
+}
+
+// Deterministic start poses (normalised): the mobile object's own, then seeded random ones,
+// turned and placed relative to it (a rotation R_init·R, a position R_init·u about the fixed
+// features' centre), so that the same problem in a moved or turned world starts from the same
+// poses relative to its geometry.
+std::vector<std::pair<Matrix3d, Vector3d>> startPoses(const Problem& problem,
+                                                      const ConditionSystem& s, int count) {
+  std::vector<std::pair<Matrix3d, Vector3d>> starts;
+  const Isometry3d& X = problem.mobile.pose;
+  const Matrix3d R_init = X.linear();
+  // the object's own pose, unless far beyond its task (then its rotation, about the centre)
+  const Vector3d t_init = s.normalise(X);
+  starts.emplace_back(R_init, t_init.norm() <= 1e3 ? t_init : Vector3d::Zero());
+  std::mt19937_64 rng(0x5e75u);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(-1.5, 1.5);
+  while (static_cast<int>(starts.size()) < count) {
+    Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+    q.normalize();
+    const Vector3d u(uniform(rng), uniform(rng), uniform(rng));
+    starts.emplace_back(R_init * q.toRotationMatrix(), R_init * u);
+  }
+  return starts;
+}
+
+}  // namespace
+
+bool solveSets(const Problem& problem, const Registry& registry, const Tolerance& tol,
+               Solution& solution, const StageOptions& options) {
+  if (!(detail::largestMagnitude(problem) <= 1e100)) {
+    solution.message = "coordinates or values beyond 1e100 (or not numbers): scale the problem";
+    return false;
+  }
+  std::vector<ConditionSystem> systems;
+  std::string why;
+  if (!detail::buildConditionSystems(problem, registry, &systems, &why)) {
+    solution.message = why;
+    return false;
+  }
+  const std::size_t n = problem.constraints.size();
+  const SourceMask sources = n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
+  std::vector<Branch> branches;
+  int points = 0, singular = 0;
+  for (std::size_t a = 0; a < systems.size(); ++a) {
+    const ConditionSystem& s = systems[a];
+    std::vector<std::shared_ptr<const ChartData>> charts;
+    // the same starts for every alternative, whatever the constraints' order
+    for (auto [R, t] : startPoses(problem, s, options.set_starts)) {
+      if (static_cast<int>(branches.size()) >= options.max_charts) break;
+      if (!detail::findPoint(s, &R, &t)) continue;
+      ++points;
+      if (covered(charts, R, t)) continue;
+      auto data = std::make_shared<ChartData>();
+      if (!detail::makeChart(s, R, t, &data->chart) ||
+          !detail::growChart(data->chart, kFirstBox, kLargestBox)) {
+        ++singular;
+        continue;
+      }
+      data->centre_w = s.centre_w, data->centre_m = s.centre_m, data->scale = s.scale;
+      const ChartManifold m(data);
+      if (!verified(m, problem, registry, tol)) continue;
+      charts.push_back(data);
+      Branch b;
+      b.manifold.emplace<ChartManifold>(m);
+      b.sources = sources;
+      b.exact = false;
+      const double spread = data->chart.slice * std::sqrt(static_cast<double>(data->chart.m));
+      b.certified = {spread * s.scale, 2.0 * spread};
+      branches.push_back(std::move(b));
+    }
+  }
+  if (branches.empty()) {
+    solution.message =
+        points == 0 ? "no pose found by descent from " +
+                          std::to_string(options.set_starts * static_cast<int>(systems.size())) +
+                          " starts (not proven inconsistent)"
+                    : "the " + std::to_string(points) +
+                          " poses found are singular points of the constraints or on a range's "
+                          "edge: no chart proven";
+    return false;
+  }
+  solution.branches = std::move(branches);
+  solution.status = Status::kSolved;
+  solution.complete = false;
+  solution.isolated_complete = false;
+  solution.conflicts.clear();
+  solution.message.clear();
+  (void)singular;
+  return true;
+}
+
+}  // namespace relpos::complete

@@ -1,0 +1,180 @@
+// The numeric stage's charts (docs/spec.md §8.7), on random problems built around a known pose
+// (2-3 constraints of every kind, some of them ranges), solved by the chart stage directly — also
+// the problems the rules answer, for more cases than the rules leave. Every pose of every chart
+// meets every input constraint by the tests' own evaluator (written from the spec), each chart's
+// DOF is the solution set's local dimension measured independently, a chart maps its own poses
+// back to themselves, and the answer is the same for the same problem moved, turned or scaled.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <limits>
+#include <random>
+
+#include "evaluator.hpp"
+#include "local_dof.hpp"
+#include "problem_transforms.hpp"
+#include "random_problems.hpp"
+#include "relpos/complete/stage.hpp"
+#include "solve_helpers.hpp"
+
+namespace relpos::test {
+namespace {
+
+Tolerance toleranceOf(const Problem& p) { return Tolerance::forScale(2.0 * p.lengthScale()); }
+
+// Turns constraint c (of a kind with a value) into a range about its value: two-sided, or
+// one-sided either way, within what the spec accepts.
+void widen(InputConstraint& c, const SingleKind& kind, Rng& rng, int sides) {
+  const std::string type = kind.type;
+  if (!c.has_value || (type != "distance" && type != "angle" && type != "skew-distance")) return;
+  const bool plane = kind.fixed == FeatureKind::kPlane || kind.mobile == FeatureKind::kPlane;
+  const bool line_plane = kind.fixed != kind.mobile;
+  double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+  if ((type == "distance" || type == "skew-distance") && !plane) lo = 0.0;
+  if (type == "angle") lo = line_plane ? -kPi / 2 : 0.0, hi = line_plane ? kPi / 2 : kPi;
+  const double v = c.value;
+  c.has_value = false;
+  c.min = -std::numeric_limits<double>::infinity();
+  c.max = std::numeric_limits<double>::infinity();
+  if (sides != 2) c.min = std::max(lo, v - rng.uniform(0.05, 0.4));
+  if (sides != 1) c.max = std::min(hi, v + rng.uniform(0.05, 0.4));
+}
+
+// A random problem of 2-3 constraints about a known pose, the mobile object starting there.
+KnownProblem randomProblem(Rng& rng, int index) {
+  const auto& kinds = singleKinds();
+  KnownProblem kp = emptyKnownProblem(rng, false);
+  const int n = 2 + index % 2;
+  NamedFeature shared;
+  for (int k = 0; k < n; ++k) {
+    const SingleKind& kind = kinds[rng.integer(0, static_cast<int>(kinds.size()) - 1)];
+    addConstraint(kp, kind, rng, false, k > 0 && index % 3 == 0 ? &shared : nullptr);
+    if (k == 0) shared = kp.problem.mobile.features.back();
+    if ((index + k) % 2 == 0) widen(kp.problem.constraints.back(), kind, rng, (index + k) % 3);
+  }
+  kp.problem.mobile.pose = kp.X_WM_star;
+  return kp;
+}
+
+Solution solveByCharts(const Problem& p) {
+  Solution s;
+  s.status = Status::kUnhandled;
+  complete::solveSets(p, builtinRegistry(), toleranceOf(p), s);
+  return s;
+}
+
+constexpr int kProblems = 240;
+
+TEST(ChartStage, EveryPoseOfEveryChartMeetsEveryConstraintAndItsDofIsTheSetsDimension) {
+  Rng rng(2016);
+  std::mt19937_64 sampler(16);
+  int solved = 0, charts = 0, dof_checked = 0;
+  for (int i = 0; i < kProblems; ++i) {
+    const KnownProblem kp = randomProblem(rng, i);
+    ASSERT_LT(worstViolation(kp.problem, kp.X_WM_star), 1e-9) << "generator bug";
+    SCOPED_TRACE("problem " + std::to_string(i));
+    const Solution s = solveByCharts(kp.problem);
+    if (s.status != Status::kSolved) continue;
+    ++solved;
+    EXPECT_FALSE(s.complete);
+    for (const Branch& b : s.branches) {
+      ++charts;
+      EXPECT_FALSE(b.exact);
+      EXPECT_TRUE(std::isfinite(b.certified.radius) && b.certified.radius >= 0.0);
+      const Manifold& m = *b.manifold;
+      for (int k = 0; k < 24; ++k) {
+        const Params theta = sampleParams(m, sampler);
+        const Isometry3d X = m.pose(theta);
+        ASSERT_TRUE(X.matrix().allFinite());
+        int which = -1;
+        EXPECT_LT(worstViolation(kp.problem, X, &which), 1e-8)
+            << "constraint " << which << " at " << poseText(X) << "\n"
+            << describeBranches(s);
+        // the chart's own poses project back onto themselves
+        const Isometry3d back = m.pose(m.project(X));
+        EXPECT_LT((back.matrix() - X.matrix()).cwiseAbs().maxCoeff(),
+                  1e-9 * (1.0 + X.translation().norm()));
+      }
+      // a chart is proven free of singular points: its DOF is the set's dimension there
+      const Isometry3d base = m.pose(Params{});
+      EXPECT_EQ(m.dof(), localDof(kp.problem, base)) << poseText(base);
+      ++dof_checked;
+    }
+  }
+  std::printf("[charts] %d of %d problems answered with %d charts, DOF checked %d\n", solved,
+              kProblems, charts, dof_checked);
+  // Started on the set, the descent finds it: most problems get a chart (the others' poses
+  // found sit on a range's edge or at a singular point of the constraints).
+  EXPECT_GE(solved, kProblems * 3 / 4);
+}
+
+// The same problem moved, turned, scaled or with its frames' origins elsewhere: the same first
+// chart (its DOF, its base pose the transformed one), and mostly as many charts.
+TEST(ChartStage, MovedTurnedAndScaledCopiesGiveTheSameCharts) {
+  Rng rng(2017);
+  int compared = 0, differing = 0;
+  for (int i = 0; i < 60; ++i) {
+    const KnownProblem kp = randomProblem(rng, i);
+    const Solution a = solveByCharts(kp.problem);
+    if (a.status != Status::kSolved) continue;
+    for (const ProblemTransform& t : invarianceTransforms()) {
+      SCOPED_TRACE("problem " + std::to_string(i) + ", " + t.label);
+      const Problem moved = t.apply(kp.problem);
+      const Solution b = solveByCharts(moved);
+      ASSERT_EQ(b.status, Status::kSolved) << b.message;
+      ++compared;
+      // the first chart is the descent's from the mobile object's pose: the same one, moved —
+      // unless rounding tipped a descent or a proof the other way (counted, and bounded below)
+      const Manifold& ma = *a.branches[0].manifold;
+      const Manifold& mb = *b.branches[0].manifold;
+      const Isometry3d Xa = t.applyToPose(ma.pose(Params{}));
+      const Isometry3d Xb = mb.pose(Params{});
+      const double size = t.lengthFactor() * kp.problem.lengthScale();
+      const bool same = ma.dof() == mb.dof() && b.branches.size() == a.branches.size() &&
+                        (Xa.translation() - Xb.translation()).norm() < 1e-6 * (size + t.reach()) &&
+                        (Xa.linear() - Xb.linear()).norm() < 1e-6;
+      differing += !same;
+    }
+  }
+  std::printf("[charts] %d transformed copies compared, %d with other charts\n",
+              compared, differing);
+  EXPECT_GT(compared, 100);
+  EXPECT_LE(differing * 4, compared);
+}
+
+// Same input, same output: solving twice gives the same charts, to the last bit.
+TEST(ChartStage, Deterministic) {
+  Rng rng(2018);
+  for (int i = 0; i < 30; ++i) {
+    const KnownProblem kp = randomProblem(rng, i);
+    const Solution a = solveByCharts(kp.problem), b = solveByCharts(kp.problem);
+    ASSERT_EQ(a.status, b.status);
+    ASSERT_EQ(a.branches.size(), b.branches.size());
+    for (std::size_t k = 0; k < a.branches.size(); ++k)
+      EXPECT_EQ(a.branches[k].manifold->pose(Params{}).matrix(),
+                b.branches[k].manifold->pose(Params{}).matrix());
+  }
+}
+
+// No pose meets two ranges on one point that do not overlap: no chart, and no claim of
+// inconsistency either (the stage has no proof of it).
+TEST(ChartStage, DisjointRangesGiveNoChart) {
+  Problem p;
+  p.addFixedFeature("floor", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitZ()));
+  p.addFixedFeature("ceiling", Feature::makePlane(Vector3d(0, 0, 1), Vector3d::UnitZ()));
+  p.addMobileFeature("tip", Feature::makePoint(Vector3d(0.1, 0, 0)));
+  p.addConstraint("distance", "floor", "tip");
+  p.constraints.back().has_value = false;
+  p.constraints.back().min = 0.7, p.constraints.back().max = 0.9;
+  p.addConstraint("distance", "ceiling", "tip");
+  p.constraints.back().has_value = false;
+  p.constraints.back().min = -0.5, p.constraints.back().max = -0.4;  // 0.5..0.6 above the floor
+  Solution s;
+  s.status = Status::kUnhandled;
+  EXPECT_FALSE(complete::solveSets(p, builtinRegistry(), toleranceOf(p), s));
+  EXPECT_TRUE(s.branches.empty());
+  EXPECT_NE(s.message.find("no pose found"), std::string::npos) << s.message;
+}
+
+}  // namespace
+}  // namespace relpos::test
