@@ -36,6 +36,16 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
   return worst;
 }
 
+// Grows the chart from the first box, or from smaller ones when the base is that close to a
+// range's edge or to where the equations' Jacobian turns singular: a small chart is still a
+// certified piece of the set.
+bool grown(Chart& chart) {
+  double first = kFirstBox;
+  for (int k = 0; k < 4; ++k, first *= 0.1)  // 1e-3 down to 1e-6
+    if (detail::growChart(chart, first, kLargestBox)) return true;
+  return false;
+}
+
 // Whether pose (R, t) is already a pose of one of `charts`, inside its box.
 bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const Matrix3d& R,
              const Vector3d& t) {
@@ -116,8 +126,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
-      if (!detail::makeChart(s, R, t, &data->chart) ||
-          !detail::growChart(data->chart, kFirstBox, kLargestBox)) {
+      if (!detail::makeChart(s, R, t, &data->chart) || !grown(data->chart)) {
         ++singular;
         continue;
       }
