@@ -5,8 +5,8 @@
 namespace relpos::complete::detail {
 namespace {
 
-constexpr const char* kNames[6] = {"chart_1", "chart_2", "chart_3", "chart_4", "chart_5",
-                                   "chart_6"};
+constexpr const char* kNames[6] = {"chart_1", "chart_2", "chart_3",
+                                   "chart_4", "chart_5", "chart_6"};
 
 }  // namespace
 

@@ -9,8 +9,9 @@ namespace relpos::complete::detail {
 namespace {
 
 // How far into a range the descent aims: its inner half (a one-sided range: this far past its
-// bound, in the normalised units).
-constexpr double kShrink = 0.25;
+// bound, in the normalised units); then, when the inner parts of the ranges do not meet on the
+// equations' set, closer to the edges.
+constexpr double kShrinks[] = {0.25, 0.05, 0.005};
 constexpr double kOneSided = 0.05;
 
 struct Residuals {
@@ -19,18 +20,18 @@ struct Residuals {
   double cost = 0.0;
 };
 
-double innerLo(const Condition& c) {
+double innerLo(const Condition& c, double shrink) {
   if (!std::isfinite(c.lo)) return c.lo;
-  return std::isfinite(c.hi) ? c.lo + kShrink * (c.hi - c.lo) : c.lo + kOneSided;
+  return std::isfinite(c.hi) ? c.lo + shrink * (c.hi - c.lo) : c.lo + kOneSided * shrink / 0.25;
 }
-double innerHi(const Condition& c) {
+double innerHi(const Condition& c, double shrink) {
   if (!std::isfinite(c.hi)) return c.hi;
-  return std::isfinite(c.lo) ? c.hi - kShrink * (c.hi - c.lo) : c.hi - kOneSided;
+  return std::isfinite(c.lo) ? c.hi - shrink * (c.hi - c.lo) : c.hi - kOneSided * shrink / 0.25;
 }
 
 // The residuals at coordinates y about (R0, t0), the conditions already in that base frame.
 void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& in,
-               const Vector6d& y, bool with_jacobian, Residuals* out) {
+               const Vector6d& y, bool with_jacobian, double shrink, Residuals* out) {
   std::array<Dual<double>, 6> yd;
   for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
   const LocalPose<Dual<double>> X(yd);
@@ -50,7 +51,7 @@ void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& i
   }
   for (const Condition& c : in) {
     const Dual<double> g = evaluate(c, X);
-    const double lo = innerLo(c), hi = innerHi(c);
+    const double lo = innerLo(c, shrink), hi = innerHi(c, shrink);
     put(g, g.v < lo ? g.v - lo : (g.v > hi ? g.v - hi : 0.0));
   }
   out->cost = out->r.squaredNorm();
@@ -71,9 +72,8 @@ bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t) {
   return true;
 }
 
-}  // namespace
-
-bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
+// One descent towards the ranges shrunk by `shrink`.
+void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) {
   double lambda = 1e-3;
   std::vector<Condition> eq, in;
   Residuals cur, trial;
@@ -81,7 +81,7 @@ bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
     eq.clear(), in.clear();
     for (const Condition& c : s.equations) eq.push_back(inBaseFrame(c, *R, *t));
     for (const Condition& c : s.inequalities) in.push_back(inBaseFrame(c, *R, *t));
-    residuals(eq, in, Vector6d::Zero(), true, &cur);
+    residuals(eq, in, Vector6d::Zero(), true, shrink, &cur);
   };
   rebase();
   for (int it = 0; it < 200 && cur.cost > 1e-30; ++it) {
@@ -90,8 +90,8 @@ bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
     Matrix6d A = JtJ;
     A.diagonal().array() += lambda * (1.0 + JtJ.diagonal().array());
     const Vector6d step = -A.ldlt().solve(g);
-    if (!step.allFinite()) return false;
-    residuals(eq, in, step, false, &trial);
+    if (!step.allFinite()) return;
+    residuals(eq, in, step, false, shrink, &trial);
     if (trial.cost < cur.cost) {
       Matrix3d R2;
       Vector3d t2;
@@ -105,7 +105,18 @@ bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
     }
     if (step.norm() < 1e-15) break;
   }
-  return holds(s, *R, *t);
+}
+
+}  // namespace
+
+bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
+  for (double shrink : kShrinks) {
+    descend(s, shrink, R, t);
+    if (!R->allFinite() || !t->allFinite()) return false;
+    if (holds(s, *R, *t)) return true;
+    if (s.inequalities.empty()) return false;  // the shrink changes nothing
+  }
+  return false;
 }
 
 }  // namespace relpos::complete::detail

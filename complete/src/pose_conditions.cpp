@@ -40,10 +40,12 @@ class Builder {
       case FundamentalKind::kPointPoint:
         if (f.exact() && f.lo == 0.0) {
           for (int i = 0; i < 3; ++i)
-            push(ConditionKind::kPointPlane, f.p, Vector3d::Zero(), f.q, Vector3d::Unit(i), 0.0, 0.0, source);
+            push(ConditionKind::kPointPlane, f.p, Vector3d::Zero(), f.q, Vector3d::Unit(i), 0.0,
+                 0.0, source);
           return true;
         }
-        push(ConditionKind::kPointPoint, f.p, Vector3d::Zero(), f.q, Vector3d::Zero(), squareLo(lo), squareHi(hi), source);
+        push(ConditionKind::kPointPoint, f.p, Vector3d::Zero(), f.q, Vector3d::Zero(), squareLo(lo),
+             squareHi(hi), source);
         return true;
       case FundamentalKind::kPointLine:
         if (f.point_side == Side::kMobile) {
@@ -54,7 +56,8 @@ class Builder {
             push(ConditionKind::kPointPlane, f.p, Vector3d::Zero(), f.q, e2, 0.0, 0.0, source);
             return true;
           }
-          push(ConditionKind::kPointLine, f.p, Vector3d::Zero(), f.q, f.d, squareLo(lo), squareHi(hi), source);
+          push(ConditionKind::kPointLine, f.p, Vector3d::Zero(), f.q, f.d, squareLo(lo),
+               squareHi(hi), source);
           return true;
         }
         // the fixed point p, the mobile line (q, d)
@@ -65,7 +68,8 @@ class Builder {
           push(ConditionKind::kPlanePoint, f.q, e2, f.p, Vector3d::Zero(), 0.0, 0.0, source);
           return true;
         }
-        push(ConditionKind::kLinePoint, f.q, f.d, f.p, Vector3d::Zero(), squareLo(lo), squareHi(hi), source);
+        push(ConditionKind::kLinePoint, f.q, f.d, f.p, Vector3d::Zero(), squareLo(lo), squareHi(hi),
+             source);
         return true;
       case FundamentalKind::kPointPlane:
         if (f.point_side == Side::kMobile)
@@ -78,19 +82,23 @@ class Builder {
           // R u_m = ±u_f: two cosines 0 across u_f, and the sign as an inequality
           Vector3d e1, e2;
           across(f.q, &e1, &e2);
-          push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), e1, 0.0, 0.0, source);
-          push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), e2, 0.0, 0.0, source);
+          push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), e1, 0.0, 0.0,
+               source);
+          push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), e2, 0.0, 0.0,
+               source);
           if (f.lo < kParallelAngle)
-            push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q, 0.5, kInf, source);
+            push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q, 0.5, kInf,
+                 source);
           else
-            push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q, -kInf, -0.5, source);
+            push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q, -kInf, -0.5,
+                 source);
           return true;
         }
         // angle in [lo, hi] ⇔ cos in [cos hi, cos lo]; the ends 0 and π bound nothing
         const double clo = hi >= kPi ? -kInf : std::cos(hi);
         const double chi = lo <= 0.0 ? kInf : std::cos(lo);
-        push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q, f.exact() ? std::cos(lo) : clo,
-             f.exact() ? std::cos(lo) : chi, source);
+        push(ConditionKind::kCosine, Vector3d::Zero(), f.p, Vector3d::Zero(), f.q,
+             f.exact() ? std::cos(lo) : clo, f.exact() ? std::cos(lo) : chi, source);
         return true;
       }
       case FundamentalKind::kLineLine:
@@ -102,7 +110,8 @@ class Builder {
           push(ConditionKind::kSkewSquared, f.p, f.u, f.q, f.d, 0.0, 0.0, source, lo * lo);
           return true;
         }
-        if (lo > 0.0) push(ConditionKind::kSkewSquared, f.p, f.u, f.q, f.d, 0.0, kInf, source, lo * lo);
+        if (lo > 0.0)
+          push(ConditionKind::kSkewSquared, f.p, f.u, f.q, f.d, 0.0, kInf, source, lo * lo);
         if (std::isfinite(hi))
           push(ConditionKind::kSkewSquared, f.p, f.u, f.q, f.d, -kInf, 0.0, source, hi * hi);
         return true;
@@ -196,11 +205,10 @@ bool conditionBefore(const Condition& a, const Condition& b) {
 }
 
 bool systemBefore(const ConditionSystem& a, const ConditionSystem& b) {
-  return std::lexicographical_compare(a.equations.begin(), a.equations.end(),
-                                      b.equations.begin(), b.equations.end(), conditionBefore) ||
-         (!std::lexicographical_compare(b.equations.begin(), b.equations.end(),
-                                        a.equations.begin(), a.equations.end(),
-                                        conditionBefore) &&
+  return std::lexicographical_compare(a.equations.begin(), a.equations.end(), b.equations.begin(),
+                                      b.equations.end(), conditionBefore) ||
+         (!std::lexicographical_compare(b.equations.begin(), b.equations.end(), a.equations.begin(),
+                                        a.equations.end(), conditionBefore) &&
           std::lexicographical_compare(a.inequalities.begin(), a.inequalities.end(),
                                        b.inequalities.begin(), b.inequalities.end(),
                                        conditionBefore));
@@ -224,8 +232,8 @@ bool buildConditionSystems(const Problem& problem, const Registry& registry,
     Decomposition d;
     t->decompose(c, c.fixed.placed(problem.fixed.pose), SourceMask{1} << (i % 64), d, t->context);
     if (d.unhandled || d.alternatives.empty()) {
-      *why = "constraint " + std::to_string(i) + " ('" + c.type + "'): " +
-             (d.unhandled ? d.unhandled : "no fundamental constraints");
+      *why = "constraint " + std::to_string(i) + " ('" + c.type +
+             "'): " + (d.unhandled ? d.unhandled : "no fundamental constraints");
       return false;
     }
     per.emplace_back();
@@ -274,10 +282,25 @@ double largestMagnitude(const Problem& p) {
     const Feature f = c.fixed.placed(p.fixed.pose);
     for (const Feature* x : {&f, &c.mobile}) m = std::max(m, x->point.cwiseAbs().maxCoeff());
     for (double v : {c.value, c.min, c.max})
-      if (std::isfinite(v)) m = std::max(m, std::abs(v));
-      else if (std::isnan(v)) return v;
+      if (std::isfinite(v))
+        m = std::max(m, std::abs(v));
+      else if (std::isnan(v))
+        return v;
   }
   return m;
+}
+
+double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                      const Isometry3d& X) {
+  double worst = 0.0;
+  for (const InputConstraint& c : problem.constraints) {
+    const ConstraintType* t = registry.constraintType(c.type);
+    if (!t || !t->violation) return std::numeric_limits<double>::infinity();
+    const double v =
+        t->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X), tol, t->context);
+    if (!(v <= worst)) worst = std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
+  }
+  return worst;
 }
 
 Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0) {

@@ -24,13 +24,13 @@ namespace relpos::complete::detail {
 
 enum class ConditionKind : unsigned char {
   kPointPoint,  // |x − q|², x = R p + t the mobile point
-  kPointLine,   // |v|² − (v·d)², v = x − q: the mobile point's squared distance to a fixed line
-  kLinePoint,   // the same from the fixed point q to the mobile line (p, u)
-  kPointPlane,  // (x − q)·d: the mobile point's offset from a fixed plane
-  kPlanePoint,  // (q − x)·(R u): the fixed point's offset from the mobile plane (p, u)
-  kCosine,      // (R u)·d
-  kSkew,        // (x − q)·(R u × d): zero when the mobile line (p, u) meets the fixed (q, d)
-  kSkewSquared, // ((x − q)·n)² − k |n|², n = R u × d: the skew distance's square minus k
+  kPointLine,  // |v|² − (v·d)², v = x − q: the mobile point's squared distance to a fixed line
+  kLinePoint,    // the same from the fixed point q to the mobile line (p, u)
+  kPointPlane,   // (x − q)·d: the mobile point's offset from a fixed plane
+  kPlanePoint,   // (q − x)·(R u): the fixed point's offset from the mobile plane (p, u)
+  kCosine,       // (R u)·d
+  kSkew,         // (x − q)·(R u × d): zero when the mobile line (p, u) meets the fixed (q, d)
+  kSkewSquared,  // ((x − q)·n)² − k |n|², n = R u × d: the skew distance's square minus k
 };
 
 struct Condition {
@@ -70,6 +70,11 @@ bool buildConditionSystems(const Problem& problem, const Registry& registry,
 // The largest magnitude of the problem's coordinates and values as placed, and of the mobile
 // object's initial pose (NaN for a NaN): beyond 1e100 a pose's squared distances overflow.
 double largestMagnitude(const Problem& p);
+
+// The worst violation of any input constraint at pose X, in tolerances (infinity: unknown, or a
+// type without a violation function): what every branch of the stage is checked with (§6.5).
+double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                      const Isometry3d& X);
 
 // The conditions with their fixed data moved into the frame of the base pose (R0, t0): then the
 // pose R0·Q(a, b, c), t0 + R0·τ has the coordinates y = (a, b, c, τ), and y = 0 is the base.

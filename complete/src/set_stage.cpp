@@ -23,19 +23,6 @@ constexpr double kCheckTolerances = 10.0;
 constexpr double kFirstBox = 1e-3;
 constexpr double kLargestBox = 4.0;
 
-double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                      const Isometry3d& X) {
-  double worst = 0.0;
-  for (const InputConstraint& c : problem.constraints) {
-    const ConstraintType* t = registry.constraintType(c.type);
-    if (!t || !t->violation) return std::numeric_limits<double>::infinity();
-    const double v =
-        t->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X), tol, t->context);
-    if (!(v <= worst)) worst = std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
-  }
-  return worst;
-}
-
 // Grows the chart from the first box, or from smaller ones when the base is that close to a
 // range's edge or to where the equations' Jacobian turns singular: a small chart is still a
 // certified piece of the set.
@@ -64,12 +51,14 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
 bool verified(const ChartManifold& m, const Problem& problem, const Registry& registry,
               const Tolerance& tol) {
   Params theta{};
-  if (!(worstViolation(problem, registry, tol, m.pose(theta)) <= kCheckTolerances)) return false;
+  if (!(detail::worstViolation(problem, registry, tol, m.pose(theta)) <= kCheckTolerances))
+    return false;
   for (int j = 0; j < m.dof(); ++j)
     for (double s : {-1.0, 1.0}) {
       Params th{};
       th[j] = s * m.parameter(j).max;
-      if (!(worstViolation(problem, registry, tol, m.pose(th)) <= kCheckTolerances)) return false;
+      if (!(detail::worstViolation(problem, registry, tol, m.pose(th)) <= kCheckTolerances))
+        return false;
     }
   return true;
 }
@@ -115,7 +104,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   const std::size_t n = problem.constraints.size();
   const SourceMask sources = n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
   std::vector<Branch> branches;
-  int points = 0, singular = 0;
+  int points = 0;
   for (std::size_t a = 0; a < systems.size(); ++a) {
     const ConditionSystem& s = systems[a];
     std::vector<std::shared_ptr<const ChartData>> charts;
@@ -126,10 +115,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
-      if (!detail::makeChart(s, R, t, &data->chart) || !grown(data->chart)) {
-        ++singular;
-        continue;
-      }
+      if (!detail::makeChart(s, R, t, &data->chart) || !grown(data->chart)) continue;
       data->centre_w = s.centre_w, data->centre_m = s.centre_m, data->scale = s.scale;
       const ChartManifold m(data);
       if (!verified(m, problem, registry, tol)) continue;
@@ -159,7 +145,6 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   solution.isolated_complete = false;
   solution.conflicts.clear();
   solution.message.clear();
-  (void)singular;
   return true;
 }
 

@@ -7,10 +7,10 @@
 #include <thread>
 #include <utility>
 
-#include "relpos/complete/fiber.hpp"
-#include "relpos/complete/problem_encoding.hpp"
 #include "pose_conditions.hpp"
 #include "real_root_proof.hpp"
+#include "relpos/complete/fiber.hpp"
+#include "relpos/complete/problem_encoding.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/manifolds/rotation/fixed.hpp"
 #include "relpos/manifolds/separable.hpp"
@@ -77,20 +77,6 @@ bool mayBeReal(const CertifiedRoot& r) {
   return true;
 }
 
-// The worst violation of any input constraint at pose X, in tolerances (infinity: unknown).
-double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                      const Isometry3d& X) {
-  double worst = 0.0;
-  for (const InputConstraint& c : problem.constraints) {
-    const ConstraintType* t = registry.constraintType(c.type);
-    if (!t || !t->violation) return std::numeric_limits<double>::infinity();
-    const double v =
-        t->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X), tol, t->context);
-    if (!(v <= worst)) worst = std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
-  }
-  return worst;
-}
-
 // Whether the family's root count N rests on a trace test (a stored start system,
 // docs/spec.md §8.5), not only on monodromy and numerical cross-checks: measured, a start system
 // computed in the process can undercount (a random problem whose known pose was missed while its
@@ -106,8 +92,8 @@ FiberOptions fiberOptions(const StageOptions& options, const Family& family) {
   FiberOptions o;
   o.compute_start_system = options.compute_start_systems;
   const StartSystem* start = findStartSystem(family, false);
-  const int threads =
-      options.threads > 0 ? options.threads
+  const int threads = options.threads > 0
+                          ? options.threads
                           : std::min(2, static_cast<int>(std::thread::hardware_concurrency()));
   if (start && start->roots.size() >= 16) o.threads = std::max(1, threads);
   return o;
@@ -181,7 +167,7 @@ bool solvePoseAlternative(const Problem& problem, const Registry& registry, cons
       if (std::abs(along) < 0.5) return doubtBoth(a, "a parallelism's orientation undecided");
       if (s.sign * along < 0.0) return;  // a root of the equations, the other orientation
     }
-    const double v = worstViolation(problem, registry, tol, pe.pose);
+    const double v = detail::worstViolation(problem, registry, tol, pe.pose);
     if (!(v <= kCheckTolerances))
       return doubtBoth(
           a, "a certified real root breaks a constraint by " + std::to_string(v) + " tolerances");
@@ -211,7 +197,8 @@ bool solvePose(const Problem& problem, const Registry& registry, const Tolerance
     return false;
   }
   for (unsigned alternative = 0; alternative < (1u << first.alternatives); ++alternative)
-    if (!solvePoseAlternative(problem, registry, tol, alternative, options, a, report, why)) return false;
+    if (!solvePoseAlternative(problem, registry, tol, alternative, options, a, report, why))
+      return false;
   return true;
 }
 
@@ -270,7 +257,7 @@ bool solveLine(const Problem& problem, const Registry& registry, const Tolerance
     if (!lineBranch(registry, tol, enc, le, &b))
       return doubtBoth(a, "the rules did not solve the line's coincidence");
     const Manifold& m = *b.manifold;
-    const double v = worstViolation(problem, registry, tol, m.pose(referenceParams(m)));
+    const double v = detail::worstViolation(problem, registry, tol, m.pose(referenceParams(m)));
     if (!(v <= kCheckTolerances))
       return doubtBoth(
           a, "a certified real line breaks a constraint by " + std::to_string(v) + " tolerances");
@@ -296,7 +283,8 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
   rep = StageReport{};
   if (problem.constraints.empty()) return decline(solution, "no constraints");
   if (!(detail::largestMagnitude(problem) <= 1e100))
-    return decline(solution, "coordinates or values beyond 1e100 (or not numbers): scale the problem");
+    return decline(solution,
+                   "coordinates or values beyond 1e100 (or not numbers): scale the problem");
   for (const InputConstraint& c : problem.constraints) {
     const ConstraintType* t = registry.constraintType(c.type);
     if (!t || t->origin != "built-in")
@@ -330,13 +318,12 @@ bool solveComplete(const Problem& problem, const Registry& registry, const Toler
                          std::to_string(a.proof_boxes) + " boxes) finds no other";
       return true;
     }
-    return decline(solution, a.proven ? "no isolated real pose among all " +
-                                            std::to_string(rep.root_count) +
-                                            " certified solutions of the polynomial encoding, "
-                                            "and no proof that no other pose exists: " +
-                                            a.real_doubt
-                                      : "no solution among the roots found, and not proven: " +
-                                            a.doubt);
+    return decline(solution,
+                   a.proven ? "no isolated real pose among all " + std::to_string(rep.root_count) +
+                                  " certified solutions of the polynomial encoding, "
+                                  "and no proof that no other pose exists: " +
+                                  a.real_doubt
+                            : "no solution among the roots found, and not proven: " + a.doubt);
   }
   solution.branches = std::move(a.branches);
   for (std::size_t i = 0; i < solution.branches.size(); ++i) {

@@ -136,8 +136,8 @@ TEST(ChartStage, MovedTurnedAndScaledCopiesGiveTheSameCharts) {
       differing += !same;
     }
   }
-  std::printf("[charts] %d transformed copies compared, %d with other charts\n",
-              compared, differing);
+  std::printf("[charts] %d transformed copies compared, %d with other charts\n", compared,
+              differing);
   EXPECT_GT(compared, 100);
   EXPECT_LE(differing * 4, compared);
 }

@@ -24,8 +24,9 @@ struct TestFallback {
 const Registry& rulesOnlyRegistry();
 // The built-ins with the numeric stage limited to the stored start systems (StageOptions), frozen:
 // for the sweeps over thousands of random problems that test the rules and the solver, where each
-// new constraint signature would otherwise compute a start system for seconds. The stage itself
-// is swept with builtinRegistry() in tests/complete.
+// new constraint signature would otherwise compute a start system for seconds; its charts from 6
+// starts, at most 3 (the defaults: 12 and 8). The stage itself is swept with builtinRegistry() in
+// tests/complete.
 const Registry& sweepRegistry();
 // Those with `stage` registered as the numeric stage (named "test-stage").
 Registry builtinsWithFallback(const TestFallback& stage);
