@@ -22,27 +22,31 @@ void evaluateAll(const std::vector<Condition>& cs, const std::array<T, 6>& y, T*
   }
 }
 
-// Values and Jacobian (rows: conditions, columns: y) at y.
-void valuesAndJacobian(const std::vector<Condition>& cs, const Vector6d& y, Eigen::VectorXd* v,
-                       Eigen::MatrixXd* J) {
+// At most six equations: their matrices have fixed capacity, so a chart's pose (Newton's method,
+// run for every sample and nearest-pose query) allocates nothing.
+using EquationVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+using EquationMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+
+// The equations' residuals at y, and their Jacobian (rows: equations, columns: y) when J is set.
+void equationsAt(const std::vector<Condition>& eqs, const Vector6d& y, EquationVector* e,
+                 Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>* J = nullptr) {
+  const auto m = static_cast<Eigen::Index>(eqs.size());
+  e->resize(m);
+  if (!J) {
+    std::array<double, 6> ya;
+    for (int i = 0; i < 6; ++i) ya[i] = y[i];
+    evaluateAll(eqs, ya, e->data());
+    return;
+  }
   std::array<Dual<double>, 6> yd;
   for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
-  std::vector<Dual<double>> out(cs.size());
-  evaluateAll(cs, yd, out.data());
-  v->resize(static_cast<Eigen::Index>(cs.size()));
-  J->resize(static_cast<Eigen::Index>(cs.size()), 6);
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    (*v)[static_cast<Eigen::Index>(i)] = out[i].v;
-    for (int j = 0; j < 6; ++j) (*J)(static_cast<Eigen::Index>(i), j) = out[i].g[j];
+  std::array<Dual<double>, 6> out;
+  evaluateAll(eqs, yd, out.data());
+  J->resize(m, 6);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    (*e)[i] = out[static_cast<std::size_t>(i)].v;
+    for (int j = 0; j < 6; ++j) (*J)(i, j) = out[static_cast<std::size_t>(i)].g[j];
   }
-}
-
-Eigen::VectorXd values(const std::vector<Condition>& cs, const Vector6d& y) {
-  std::array<double, 6> ya;
-  for (int i = 0; i < 6; ++i) ya[i] = y[i];
-  Eigen::VectorXd v(static_cast<Eigen::Index>(cs.size()));
-  evaluateAll(cs, ya, v.data());
-  return v;
 }
 
 // y = B·z over a box z.
@@ -67,7 +71,7 @@ void enclose(const std::vector<Condition>& cs, const Matrix6d& B, const std::arr
              const std::array<FI, 6>& yb, std::vector<FI>* value,
              std::vector<std::array<FI, 6>>* jacobian) {
   const std::size_t n = cs.size();
-  std::vector<FI> naive(n), at0(n);
+  std::vector<FI> at0(n);
   std::array<Dual<FI>, 6> yd;
   for (int i = 0; i < 6; ++i) yd[i] = Dual<FI>::variable(yb[i], i);
   std::vector<Dual<FI>> dual(n);
@@ -111,17 +115,14 @@ bool makeChart(const ConditionSystem& system, const Matrix3d& R0, const Vector3d
   c.m = static_cast<int>(c.equations.size());
   if (c.m > 6) return false;
   c.d = 6 - c.m;
-  const Vector6d zero = Vector6d::Zero();
-  const Eigen::VectorXd g = values(c.inequalities, zero);
-  for (std::size_t i = 0; i < c.inequalities.size(); ++i)
-    if (!(c.inequalities[i].lo < g[static_cast<Eigen::Index>(i)] &&
-          g[static_cast<Eigen::Index>(i)] < c.inequalities[i].hi)) {
-      return false;
-    }
+  std::vector<double> g(c.inequalities.size());
+  evaluateAll(c.inequalities, std::array<double, 6>{}, g.data());
+  for (std::size_t i = 0; i < g.size(); ++i)
+    if (!(c.inequalities[i].lo < g[i] && g[i] < c.inequalities[i].hi)) return false;
   if (c.m > 0) {
-    Eigen::VectorXd e;
-    Eigen::MatrixXd J;
-    valuesAndJacobian(c.equations, zero, &e, &J);
+    EquationVector e;
+    Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> J;
+    equationsAt(c.equations, Vector6d::Zero(), &e, &J);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
     if (!(s[c.m - 1] > kRankGap * std::max(1.0, s[0]))) return false;
@@ -129,7 +130,7 @@ bool makeChart(const ConditionSystem& system, const Matrix3d& R0, const Vector3d
     // tangent first (the null space), normal last
     c.basis.leftCols(c.d) = V.rightCols(c.d);
     c.basis.rightCols(c.m) = V.leftCols(c.m);
-    const Eigen::MatrixXd Js = J * c.basis.rightCols(c.m);
+    const EquationMatrix Js = J * c.basis.rightCols(c.m);
     c.Y.topLeftCorner(c.m, c.m) = Js.inverse();
   }
   *out = std::move(c);
@@ -159,19 +160,22 @@ bool certifyChart(const Chart& c, const std::array<double, 6>& radius, double* s
       if (!(sigma < 0.5)) return false;
       for (int j = c.d; j < 6; ++j) z[j] = FI(-sigma, sigma);
       enclose(c.equations, c.basis, z, boxOfY(c.basis, z), &value, &jac);
+      // J_s = J_y·B_normal over the box
+      std::array<std::array<FI, 6>, 6> js;
+      for (int r = 0; r < c.m; ++r)
+        for (int l = 0; l < c.m; ++l) {
+          FI sum(0.0);
+          for (int q = 0; q < 6; ++q)
+            sum += jac[static_cast<std::size_t>(r)][q] * c.basis(q, c.d + l);
+          js[r][l] = sum;
+        }
       proven = true;
       double worst = 0.0;
       for (int i = 0; i < c.m; ++i) {
         FI k = -ye[static_cast<std::size_t>(i)];
         for (int l = 0; l < c.m; ++l) {
-          // (I − Y·J_s)(i, l), J_s = J_y·B_normal
-          FI yjs(0.0);
-          for (int r = 0; r < c.m; ++r) {
-            FI js(0.0);
-            for (int q = 0; q < 6; ++q)
-              js += jac[static_cast<std::size_t>(r)][q] * c.basis(q, c.d + l);
-            yjs += js * c.Y(i, r);
-          }
+          FI yjs(0.0);  // (Y·J_s)(i, l)
+          for (int r = 0; r < c.m; ++r) yjs += js[r][l] * c.Y(i, r);
           const FI mil = FI(i == l ? 1.0 : 0.0) - yjs;
           k += mil * FI(-sigma, sigma);
         }
@@ -243,21 +247,21 @@ void chartPose(const Chart& c, const std::array<double, 6>& theta, Matrix3d* R, 
   Vector6d z = Vector6d::Zero();
   for (int j = 0; j < c.d; ++j) z[j] = theta[j];
   if (c.m > 0) {
-    const Eigen::MatrixXd Y = c.Y.topLeftCorner(c.m, c.m);
+    const EquationMatrix Y = c.Y.topLeftCorner(c.m, c.m);
+    EquationVector e, step;
     // the simplified step contracts on the slice (Krawczyk's test); then Newton for the last
     // digits
     for (int it = 0; it < 60; ++it) {
-      const Eigen::VectorXd e = values(c.equations, c.basis * z);
-      const Eigen::VectorXd step = Y * e;
+      equationsAt(c.equations, c.basis * z, &e);
+      step = Y * e;
       z.tail(c.m) -= step;
       if (step.lpNorm<Eigen::Infinity>() < 1e-15) break;
     }
     for (int it = 0; it < 2; ++it) {
-      Eigen::VectorXd e;
-      Eigen::MatrixXd J;
-      valuesAndJacobian(c.equations, c.basis * z, &e, &J);
-      const Eigen::MatrixXd Js = J * c.basis.rightCols(c.m);
-      const Eigen::VectorXd step = Js.partialPivLu().solve(e);
+      Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> J;
+      equationsAt(c.equations, c.basis * z, &e, &J);
+      const EquationMatrix Js = J * c.basis.rightCols(c.m);
+      step = Js.partialPivLu().solve(e);
       if (!step.allFinite() || step.lpNorm<Eigen::Infinity>() > c.slice) break;
       z.tail(c.m) -= step;
     }

@@ -29,17 +29,16 @@ Isometry3d ChartManifold::pose(const Params& theta) const {
   Matrix3d R;
   Vector3d t;
   chartPose(d.chart, th, &R, &t);
-  Isometry3d X = Isometry3d::Identity();
-  X.linear() = R;
-  X.translation() = d.scale * t + d.centre_w - R * d.centre_m;
-  return X;
+  Isometry3d scaled = Isometry3d::Identity();
+  scaled.linear() = R;
+  scaled.translation() = t;
+  return d.frame.poseOf(scaled);
 }
 
 Params ChartManifold::project(const Isometry3d& X) const {
   const ChartData& d = *data_;
-  const Matrix3d R = X.linear();
-  const Vector3d t = (R * d.centre_m + X.translation() - d.centre_w) / d.scale;
-  const std::array<double, 6> th = chartProject(d.chart, R, t);
+  const Isometry3d scaled = d.frame.scaledPose(X);
+  const std::array<double, 6> th = chartProject(d.chart, scaled.linear(), scaled.translation());
   Params p{};
   for (int j = 0; j < d.chart.d; ++j) p[j] = th[j];
   return p;
@@ -57,8 +56,8 @@ std::string ChartManifold::describe() const {
 
 bool ChartManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
   auto moved = std::make_shared<ChartData>(*data_);
-  moved->centre_w += offset_W;
-  moved->centre_m += offset_M;
+  moved->frame.centre_W += offset_W;
+  moved->frame.centre_M += offset_M;
   data_ = std::move(moved);
   return true;
 }

@@ -12,9 +12,7 @@ namespace relpos::complete::detail {
 
 struct ChartData {
   Chart chart;
-  // the problem's normalisation (pose_conditions.hpp), moved by rebase()
-  Vector3d centre_w = Vector3d::Zero(), centre_m = Vector3d::Zero();
-  double scale = 1.0;
+  Normalisation frame;  // the problem's (pose_conditions.hpp), moved by rebase()
 };
 
 class ChartManifold final : public MixedManifoldBase<ChartManifold> {

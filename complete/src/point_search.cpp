@@ -12,7 +12,8 @@ namespace {
 // bound, in the normalised units); then, when the inner parts of the ranges do not meet on the
 // equations' set, closer to the edges.
 constexpr double kShrinks[] = {0.25, 0.05, 0.005};
-constexpr double kOneSided = 0.05;
+// A one-sided range's margin per unit of shrink: 0.05 past its bound at the first aim.
+constexpr double kOneSidedPerShrink = 0.2;
 
 struct Residuals {
   Eigen::VectorXd r;
@@ -22,11 +23,11 @@ struct Residuals {
 
 double innerLo(const Condition& c, double shrink) {
   if (!std::isfinite(c.lo)) return c.lo;
-  return std::isfinite(c.hi) ? c.lo + shrink * (c.hi - c.lo) : c.lo + kOneSided * shrink / 0.25;
+  return std::isfinite(c.hi) ? c.lo + shrink * (c.hi - c.lo) : c.lo + kOneSidedPerShrink * shrink;
 }
 double innerHi(const Condition& c, double shrink) {
   if (!std::isfinite(c.hi)) return c.hi;
-  return std::isfinite(c.lo) ? c.hi - shrink * (c.hi - c.lo) : c.hi - kOneSided * shrink / 0.25;
+  return std::isfinite(c.lo) ? c.hi - shrink * (c.hi - c.lo) : c.hi - kOneSidedPerShrink * shrink;
 }
 
 // The residuals at coordinates y about (R0, t0), the conditions already in that base frame.
@@ -59,8 +60,8 @@ void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& i
 
 bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t) {
   std::vector<Condition> eq, in;
-  for (const Condition& c : s.equations) eq.push_back(inBaseFrame(c, R, t));
-  for (const Condition& c : s.inequalities) in.push_back(inBaseFrame(c, R, t));
+  inBaseFrame(s.equations, R, t, &eq);
+  inBaseFrame(s.inequalities, R, t, &in);
   const std::array<double, 6> y{};
   const LocalPose<double> X(y);
   for (const Condition& c : eq)
@@ -78,9 +79,8 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
   std::vector<Condition> eq, in;
   Residuals cur, trial;
   auto rebase = [&] {
-    eq.clear(), in.clear();
-    for (const Condition& c : s.equations) eq.push_back(inBaseFrame(c, *R, *t));
-    for (const Condition& c : s.inequalities) in.push_back(inBaseFrame(c, *R, *t));
+    inBaseFrame(s.equations, *R, *t, &eq);
+    inBaseFrame(s.inequalities, *R, *t, &in);
     residuals(eq, in, Vector6d::Zero(), true, shrink, &cur);
   };
   rebase();

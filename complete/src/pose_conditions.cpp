@@ -163,33 +163,31 @@ int lengthPower(ConditionKind k) {
 
 bool usesPoints(ConditionKind k) { return k != ConditionKind::kCosine; }
 
-ConditionSystem normalise(const std::vector<Raw>& raws, int constraints) {
+ConditionSystem normalise(const std::vector<Raw>& raws) {
   ConditionSystem s;
-  s.constraints = constraints;
+  Normalisation& n = s.frame;
   Vector3d lo_w = Vector3d::Constant(kInf), hi_w = -lo_w, lo_m = lo_w, hi_m = hi_w;
   for (const Raw& r : raws) {
     if (!usesPoints(r.c.kind)) continue;
     lo_w = lo_w.cwiseMin(r.q), hi_w = hi_w.cwiseMax(r.q);
     lo_m = lo_m.cwiseMin(r.p), hi_m = hi_m.cwiseMax(r.p);
   }
-  if (lo_w.x() <= hi_w.x()) s.centre_w = 0.5 * (lo_w + hi_w), s.centre_m = 0.5 * (lo_m + hi_m);
+  if (lo_w.x() <= hi_w.x()) n.centre_W = 0.5 * (lo_w + hi_w), n.centre_M = 0.5 * (lo_m + hi_m);
   double L = 0.0;
   for (const Raw& r : raws) {
     if (!usesPoints(r.c.kind)) continue;
-    L = std::max({L, (r.q - s.centre_w).norm(), (r.p - s.centre_m).norm()});
+    L = std::max({L, (r.q - n.centre_W).norm(), (r.p - n.centre_M).norm()});
     for (double b : {r.c.lo, r.c.hi, r.c.k})
       if (std::isfinite(b))
         L = std::max(L, lengthPower(r.c.kind) == 2 ? std::sqrt(std::abs(b)) : std::abs(b));
   }
-  s.scale = L > 0.0 ? L : 1.0;
+  n.scale = L > 0.0 ? L : 1.0;
   for (const Raw& r : raws) {
     Condition c = r.c;
-    c.p = arr((r.p - (usesPoints(c.kind) ? s.centre_m : Vector3d::Zero())) / s.scale);
-    c.q = arr((r.q - (usesPoints(c.kind) ? s.centre_w : Vector3d::Zero())) / s.scale);
-    if (!usesPoints(c.kind)) c.p = c.q = {0.0, 0.0, 0.0};
+    if (usesPoints(c.kind)) c.p = arr(n.mobilePoint(r.p)), c.q = arr(n.fixedPoint(r.q));
     c.u = arr(r.u), c.d = arr(r.d);
-    const double f = std::pow(s.scale, lengthPower(c.kind));
-    c.lo /= f, c.hi /= f, c.k /= s.scale * s.scale;
+    const double f = std::pow(n.scale, lengthPower(c.kind));
+    c.lo /= f, c.hi /= f, c.k /= n.scale * n.scale;
     (c.equation() ? s.equations : s.inequalities).push_back(c);
   }
   return s;
@@ -204,14 +202,14 @@ bool conditionBefore(const Condition& a, const Condition& b) {
   return key(a) < key(b);
 }
 
+bool listBefore(const std::vector<Condition>& a, const std::vector<Condition>& b) {
+  return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), conditionBefore);
+}
+
 bool systemBefore(const ConditionSystem& a, const ConditionSystem& b) {
-  return std::lexicographical_compare(a.equations.begin(), a.equations.end(), b.equations.begin(),
-                                      b.equations.end(), conditionBefore) ||
-         (!std::lexicographical_compare(b.equations.begin(), b.equations.end(), a.equations.begin(),
-                                        a.equations.end(), conditionBefore) &&
-          std::lexicographical_compare(a.inequalities.begin(), a.inequalities.end(),
-                                       b.inequalities.begin(), b.inequalities.end(),
-                                       conditionBefore));
+  if (listBefore(a.equations, b.equations)) return true;
+  if (listBefore(b.equations, a.equations)) return false;
+  return listBefore(a.inequalities, b.inequalities);
 }
 
 }  // namespace
@@ -263,7 +261,7 @@ bool buildConditionSystems(const Problem& problem, const Registry& registry,
       rest /= static_cast<int>(alts.size());
       raws.insert(raws.end(), chosen.begin(), chosen.end());
     }
-    ConditionSystem sys = normalise(raws, static_cast<int>(problem.constraints.size()));
+    ConditionSystem sys = normalise(raws);
     std::sort(sys.equations.begin(), sys.equations.end(), conditionBefore);
     std::sort(sys.inequalities.begin(), sys.inequalities.end(), conditionBefore);
     out->push_back(std::move(sys));
@@ -309,6 +307,12 @@ Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0
   r.q = arr(R0.transpose() * (q - t0));
   r.d = arr(R0.transpose() * d);
   return r;
+}
+
+void inBaseFrame(const std::vector<Condition>& in, const Matrix3d& R0, const Vector3d& t0,
+                 std::vector<Condition>* out) {
+  out->clear();
+  for (const Condition& c : in) out->push_back(inBaseFrame(c, R0, t0));
 }
 
 }  // namespace relpos::complete::detail

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "forward_dual.hpp"
+#include "relpos/complete/study.hpp"
 #include "relpos/core/problem.hpp"
 #include "relpos/core/registry.hpp"
 
@@ -43,22 +44,11 @@ struct Condition {
   bool equation() const { return lo == hi; }
 };
 
-// One way the constraints can hold (an "either" orientation is two), normalised as above.
+// One way the constraints can hold (an "either" orientation is two), normalised as above
+// (the polynomial encodings' normalisation type, study.hpp: scaledPose and poseOf map poses).
 struct ConditionSystem {
   std::vector<Condition> equations, inequalities;
-  Vector3d centre_w = Vector3d::Zero(), centre_m = Vector3d::Zero();
-  double scale = 1.0;  // L
-  int constraints = 0;
-  // The normalised translation of pose X, and back.
-  Vector3d normalise(const Isometry3d& X) const {
-    return (X.linear() * centre_m + X.translation() - centre_w) / scale;
-  }
-  Isometry3d pose(const Matrix3d& R, const Vector3d& t) const {
-    Isometry3d X = Isometry3d::Identity();
-    X.linear() = R;
-    X.translation() = scale * t + centre_w - R * centre_m;
-    return X;
-  }
+  Normalisation frame;
 };
 
 // Every alternative of the problem's constraints (at most `max_alternatives`), or false with the
@@ -79,6 +69,9 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
 // The conditions with their fixed data moved into the frame of the base pose (R0, t0): then the
 // pose R0·Q(a, b, c), t0 + R0·τ has the coordinates y = (a, b, c, τ), and y = 0 is the base.
 Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0);
+// Every condition of `in` so moved, into `out` (cleared first).
+void inBaseFrame(const std::vector<Condition>& in, const Matrix3d& R0, const Vector3d& t0,
+                 std::vector<Condition>* out);
 
 // --- the evaluation, one template for every scalar -----------------------------------------
 template <typename T>

@@ -73,7 +73,7 @@ std::vector<std::pair<Matrix3d, Vector3d>> startPoses(const Problem& problem,
   const Isometry3d& X = problem.mobile.pose;
   const Matrix3d R_init = X.linear();
   // the object's own pose, unless far beyond its task (then its rotation, about the centre)
-  const Vector3d t_init = s.normalise(X);
+  const Vector3d t_init = s.frame.scaledPose(X).translation();
   starts.emplace_back(R_init, t_init.norm() <= 1e3 ? t_init : Vector3d::Zero());
   std::mt19937_64 rng(0x5e75u);
   std::normal_distribution<double> normal;
@@ -116,7 +116,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
       if (!detail::makeChart(s, R, t, &data->chart) || !grown(data->chart)) continue;
-      data->centre_w = s.centre_w, data->centre_m = s.centre_m, data->scale = s.scale;
+      data->frame = s.frame;
       const ChartManifold m(data);
       if (!verified(m, problem, registry, tol)) continue;
       charts.push_back(data);
@@ -125,7 +125,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       b.sources = sources;
       b.exact = false;
       const double spread = data->chart.slice * std::sqrt(static_cast<double>(data->chart.m));
-      b.certified = {spread * s.scale, 2.0 * spread};
+      b.certified = {spread * s.frame.scale, 2.0 * spread};
       branches.push_back(std::move(b));
     }
   }

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "chart.hpp"
 #include "homotopy.hpp"
 #include "krawczyk.hpp"
 #include "random.hpp"
@@ -76,6 +77,45 @@ TEST(CompleteAllocation, TrackingAndCertifyingStewartPathsAllocateNothing) {
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_GT(certified, 0);
+}
+
+// A chart's pose (Newton's method on the slice) and its projection, what every sample and
+// nearest-pose query of a chart branch runs, allocate nothing (docs/spec.md §8.7): a point at
+// distance 0.5 from a fixed point and on a plane z = 0.1 (2 equations, a 4-DOF set).
+TEST(CompleteAllocation, AChartsPoseAndProjectionAllocateNothing) {
+  using detail::Condition;
+  using detail::ConditionKind;
+  detail::ConditionSystem system;
+  Condition sphere;
+  sphere.kind = ConditionKind::kPointPoint;
+  sphere.p = {0.2, 0.0, 0.0};
+  sphere.lo = sphere.hi = 0.25;
+  Condition plane;
+  plane.kind = ConditionKind::kPointPlane;
+  plane.p = {0.2, 0.0, 0.0};
+  plane.q = {0.0, 0.0, 0.1};
+  plane.d = {0.0, 0.0, 1.0};
+  system.equations = {sphere, plane};
+  // the base: the point at (0.2, 0, 0) + t on the plane, 0.5 from the origin
+  const Vector3d t0(-0.2 + std::sqrt(0.25 - 0.01), 0.0, 0.1);
+  detail::Chart chart;
+  ASSERT_TRUE(detail::makeChart(system, Matrix3d::Identity(), t0, &chart));
+  ASSERT_TRUE(detail::growChart(chart, 1e-3, 4.0));
+  ASSERT_EQ(chart.d, 4);
+  Matrix3d R;
+  Vector3d t;
+  const long before = g_allocations.load();
+  for (int k = 0; k < 10; ++k) {
+    std::array<double, 6> theta{};
+    for (int j = 0; j < chart.d; ++j) theta[j] = chart.radius[j] * (0.1 * k - 0.45);
+    detail::chartPose(chart, theta, &R, &t);
+    const std::array<double, 6> back = detail::chartProject(chart, R, t);
+    (void)back;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  // and the pose found is on the set
+  EXPECT_NEAR((R * Vector3d(0.2, 0, 0) + t).norm(), 0.5, 1e-12);
+  EXPECT_NEAR((R * Vector3d(0.2, 0, 0) + t).z(), 0.1, 1e-12);
 }
 
 }  // namespace
