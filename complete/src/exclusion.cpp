@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <tuple>
 
 #include "rounded_interval.hpp"
 
@@ -578,10 +579,8 @@ ExclusionResult excludeUnknownRoots(const SystemShape& shape, const Interval* co
                 : split_primary;
     if (!(widest > options.min_width))
       return fail("an undecided box too narrow to split (a singular root or a set of roots)");
-    const double m = midpoint(X.x[split]);
     Box lower = X, upper = X;
-    lower.x[split] = FI(X.x[split].lower(), m);
-    upper.x[split] = FI(m, X.x[split].upper());
+    std::tie(lower.x[split], upper.x[split]) = halves(X.x[split]);
     stack.push_back(upper);
     stack.push_back(lower);
   }

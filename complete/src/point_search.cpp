@@ -15,6 +15,13 @@ constexpr double kShrinks[] = {0.25, 0.05, 0.005};
 // A one-sided range's margin per unit of shrink: 0.05 past its bound at the first aim.
 constexpr double kOneSidedPerShrink = 0.2;
 
+// The descent stops at a stationary point of a positive cost (|Jᵀr| this small against |r| |J|)
+// or after this many steps in a row that lower the cost by less than this fraction: the
+// linear convergence towards a positive minimum, where no pose is.
+constexpr double kStationary = 1e-9;
+constexpr double kProgress = 1e-3;
+constexpr int kSlowSteps = 8;
+
 struct Residuals {
   Eigen::VectorXd r;
   Eigen::MatrixXd J;
@@ -76,6 +83,7 @@ bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t) {
 // One descent towards the ranges shrunk by `shrink`.
 void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) {
   double lambda = 1e-3;
+  int slow = 0;  // successful steps that barely lowered the cost
   std::vector<Condition> eq, in;
   Residuals cur, trial;
   auto rebase = [&] {
@@ -91,8 +99,13 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
     A.diagonal().array() += lambda * (1.0 + JtJ.diagonal().array());
     const Vector6d step = -A.ldlt().solve(g);
     if (!step.allFinite()) return;
+    // a stationary point of a positive cost (no pose near, or a local minimum): stop there
+    if (g.norm() <= kStationary * std::sqrt(cur.cost) * (1.0 + std::sqrt(JtJ.diagonal().sum())))
+      return;
     residuals(eq, in, step, false, shrink, &trial);
     if (trial.cost < cur.cost) {
+      slow = trial.cost > (1.0 - kProgress) * cur.cost ? slow + 1 : 0;
+      if (slow >= kSlowSteps) return;
       Matrix3d R2;
       Vector3d t2;
       poseAt(*R, *t, step, &R2, &t2);

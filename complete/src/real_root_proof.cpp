@@ -1,73 +1,18 @@
 #include "real_root_proof.hpp"
 
-#include <Eigen/LU>
 #include <cmath>
-#include <limits>
 
 #include "relpos/complete/encoding.hpp"
+#include "translation_bound.hpp"
 
 namespace relpos::complete::detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Room around the unit sphere's cube and the derived bounds: a root on the domain's face would
 // never be inside a box of its own.
 constexpr double kMargin = 1.0 / 16.0;
 
-// lo ≤ n·t ≤ hi.
-struct Slab {
-  Vector3d n;
-  double lo, hi;
-};
-
 Vector3d vec3(const std::vector<double>& p, int at) { return {p[at], p[at + 1], p[at + 2]}; }
-
-enum class Bound { kBox, kUnbounded, kEmpty };
-
-// The box holding every t that meets all slabs (kEmpty: none does), or kUnbounded when some
-// direction is not bounded: from every well-conditioned triple t = N⁻¹ s. Widened by far more
-// than the rounding of N⁻¹ (a larger domain only costs boxes; an empty one is then a proof).
-Bound boundingBox(const std::vector<Slab>& slabs, Vector3d* lo, Vector3d* hi) {
-  *lo = Vector3d::Constant(-kInf);
-  *hi = Vector3d::Constant(kInf);
-  const int m = static_cast<int>(slabs.size());
-  for (int a = 0; a < m; ++a)
-    for (int b = a + 1; b < m; ++b)
-      for (int c = b + 1; c < m; ++c) {
-        Eigen::Matrix3d N;
-        N.row(0) = slabs[a].n.transpose();
-        N.row(1) = slabs[b].n.transpose();
-        N.row(2) = slabs[c].n.transpose();
-        if (!(std::abs(N.determinant()) > 1e-3 * N.rowwise().norm().prod())) continue;
-        const Eigen::Matrix3d inv = N.inverse();
-        const int k[3] = {a, b, c};
-        for (int i = 0; i < 3; ++i) {
-          double low = 0.0, high = 0.0;
-          for (int j = 0; j < 3; ++j) {
-            const double x = inv(i, j) * slabs[k[j]].lo, y = inv(i, j) * slabs[k[j]].hi;
-            low += std::min(x, y);
-            high += std::max(x, y);
-          }
-          (*lo)[i] = std::max((*lo)[i], low);
-          (*hi)[i] = std::min((*hi)[i], high);
-        }
-      }
-  bool empty = false;
-  for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite((*lo)[i]) || !std::isfinite((*hi)[i])) return Bound::kUnbounded;
-    const double slack = 1e-6 * (1.0 + std::abs((*lo)[i]) + std::abs((*hi)[i])) + kMargin;
-    (*lo)[i] -= slack;
-    (*hi)[i] += slack;
-    empty = empty || (*lo)[i] > (*hi)[i];
-  }
-  return empty ? Bound::kEmpty : Bound::kBox;
-}
-
-// The three axis slabs of a ball.
-void ballSlabs(const Vector3d& centre, double radius, std::vector<Slab>* out) {
-  for (int i = 0; i < 3; ++i)
-    out->push_back({Vector3d::Unit(i), centre[i] - radius, centre[i] + radius});
-}
 
 // Enclosures of the parameters of the exact problem: the normalised ones are a few roundings of
 // numbers of size about 1 away from it (normalisationOf centres and scales the geometry).
@@ -96,16 +41,15 @@ ExclusionResult unboxed(Bound b, const std::string& what) {
 // The variables from `first_secondary` on (a translation, a foot) are solved for given the
 // others (a rotation, a direction).
 ExclusionResult prove(const Family& family, const std::vector<double>& target,
-                      const RealBox& domain, const std::vector<RealBox>& known,
-                      int first_secondary, const std::vector<int>& negated,
-                      const ExclusionOptions& options) {
+                      const RealBox& domain, const std::vector<RealBox>& known, int first_secondary,
+                      const std::vector<int>& negated, const ExclusionOptions& options) {
   const std::vector<Interval> params = parameterEnclosures(target);
   std::vector<Interval> coefficients(family.shape().terms.size());
   family.coefficients(params.data(), coefficients.data());
   std::vector<bool> secondary(family.shape().variables, false);
   for (std::size_t i = first_secondary; i < secondary.size(); ++i) secondary[i] = true;
-  return excludeUnknownRoots(family.shape(), coefficients.data(), domain, known, secondary,
-                             negated, options);
+  return excludeUnknownRoots(family.shape(), coefficients.data(), domain, known, secondary, negated,
+                             options);
 }
 
 // The slabs that bound the translation of a pose, from the equations that bound it (at e·e = 1:
@@ -121,7 +65,7 @@ std::vector<Slab> translationSlabs(const PoseEncoding& enc) {
     } else if (q.kind == K::kPointPlane) {  // n·(R b + t) = h
       const Vector3d n = vec3(p, q.fixed);
       const double reach = n.norm() * vec3(p, q.mobile).norm();
-      slabs.push_back({n, p[q.value] - reach, p[q.value] + reach});
+      slabs.push_back({n, p[q.value] - reach, p[q.value] + reach, -1});
     } else if (q.kind == K::kPointLine) {  // |(t + R b − a) × û| = √D
       Vector3d u = vec3(p, q.line), n1, n2;
       if (!(u.norm() > 0.0)) continue;
@@ -130,7 +74,8 @@ std::vector<Slab> translationSlabs(const PoseEncoding& enc) {
       const double reach = vec3(p, q.mobile).norm() + std::sqrt(std::max(0.0, p[q.value]));
       n1 = u.unitOrthogonal();
       n2 = u.cross(n1);
-      for (const Vector3d& n : {n1, n2}) slabs.push_back({n, n.dot(a) - reach, n.dot(a) + reach});
+      for (const Vector3d& n : {n1, n2})
+        slabs.push_back({n, n.dot(a) - reach, n.dot(a) + reach, -1});
     }
   }
   return slabs;
@@ -139,10 +84,10 @@ std::vector<Slab> translationSlabs(const PoseEncoding& enc) {
 }  // namespace
 
 ExclusionResult proveRootsKnown(const PoseEncoding& enc, const std::vector<CertifiedRoot>& roots,
-                                    const ExclusionOptions& options) {
+                                const ExclusionOptions& options) {
   using K = PoseEquationKind;
   Vector3d lo, hi;
-  const Bound bound = boundingBox(translationSlabs(enc), &lo, &hi);
+  const Bound bound = boundingBox(translationSlabs(enc), kMargin, &lo, &hi);
   if (bound != Bound::kBox) return unboxed(bound, "translation");
   // |g| = |t| / 2 at e·e = 1, in each coordinate.
   double tt = 0.0;
@@ -179,7 +124,7 @@ ExclusionResult proveRootsKnown(const PoseEncoding& enc, const std::vector<Certi
 }
 
 ExclusionResult proveRootsKnown(const LineEncoding& enc, const std::vector<CertifiedRoot>& roots,
-                                    const ExclusionOptions& options) {
+                                const ExclusionOptions& options) {
   using K = LineEquationKind;
   const std::vector<double>& p = enc.target;
   std::vector<Slab> slabs;
@@ -188,10 +133,10 @@ ExclusionResult proveRootsKnown(const LineEncoding& enc, const std::vector<Certi
       ballSlabs(Vector3d::Zero(), vec3(p, q.fixed).norm() + std::sqrt(std::max(0.0, p[q.value])),
                 &slabs);
     else if (q.kind == K::kPlaneOffset)  // n·q = h
-      slabs.push_back({vec3(p, q.fixed), p[q.value], p[q.value]});
+      slabs.push_back({vec3(p, q.fixed), p[q.value], p[q.value], -1});
   }
   Vector3d lo, hi;
-  const Bound bound = boundingBox(slabs, &lo, &hi);
+  const Bound bound = boundingBox(slabs, kMargin, &lo, &hi);
   if (bound != Bound::kBox) return unboxed(bound, "line");
   // (w, q) ↦ (−w, q) maps roots to roots when no equation tells the two directions apart (no
   // angle but right angles): half the directions, w₀ ≥ 0, then suffice.

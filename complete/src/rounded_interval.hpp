@@ -4,6 +4,7 @@
 // around a whole test sets the mode once instead of at every operation. Units that include this
 // are compiled with -frounding-math and never with -ffast-math.
 #include <algorithm>
+#include <utility>
 #include <boost/numeric/interval.hpp>
 
 namespace relpos::complete::detail {
@@ -20,6 +21,12 @@ using RoundUp = boost::numeric::interval_lib::save_state<
 // A point of the interval (its midpoint up to rounding) without a change of rounding mode, as
 // Boost's median makes twice: halves are exact and their upward-rounded sum stays ≤ upper().
 inline double midpoint(const FI& a) { return 0.5 * a.lower() + 0.5 * a.upper(); }
+
+// The two halves of a box's coordinate at its midpoint (the bisection of the interval proofs).
+inline std::pair<FI, FI> halves(const FI& a) {
+  const double m = midpoint(a);
+  return {FI(a.lower(), m), FI(m, a.upper())};
+}
 
 // max |x| over the interval.
 inline double mag(const FI& a) { return std::max(-a.lower(), a.upper()); }

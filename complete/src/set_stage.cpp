@@ -5,6 +5,7 @@
 #include <random>
 
 #include "chart_manifold.hpp"
+#include "conflict_search.hpp"
 #include "point_search.hpp"
 #include "relpos/complete/stage.hpp"
 
@@ -129,11 +130,32 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       branches.push_back(std::move(b));
     }
   }
+  std::string unproven;
+  if (branches.empty() && points == 0) {
+    // No pose found: perhaps there is none. Proven only by the interval search of every pose.
+    const detail::ConflictProof proof =
+        detail::proveConflict(systems, n, tol, options.exclusion_boxes);
+    unproven = proof.why;
+    if (proof.proven) {
+      solution.branches.clear();
+      solution.status = Status::kInconsistent;
+      solution.complete = solution.isolated_complete = true;
+      solution.conflicts.clear();
+      for (std::size_t i = 0; i < n; ++i)
+        if (proof.conflicts & (SourceMask{1} << (i % 64)))
+          solution.conflicts.push_back(static_cast<int>(i));
+      solution.message =
+          "no pose meets these constraints together: an interval search of every "
+          "pose in reach excludes them all (" +
+          std::to_string(proof.boxes) + " boxes)";
+      return true;
+    }
+  }
   if (branches.empty()) {
     solution.message =
         points == 0 ? "no pose found by descent from " +
                           std::to_string(options.set_starts * static_cast<int>(systems.size())) +
-                          " starts (not proven inconsistent)"
+                          " starts, and not proven inconsistent: " + unproven
                     : "the " + std::to_string(points) +
                           " poses found are singular points of the constraints or on a range's "
                           "edge: no chart proven";

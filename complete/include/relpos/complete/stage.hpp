@@ -58,6 +58,9 @@ struct StageOptions {
   // object's own, then seeded random ones) and the most charts (branches) an answer holds.
   int set_starts = 12;
   int max_charts = 8;
+  // When no start leads to a pose: the boxes each attempt of the interval proof that none exists
+  // may examine (the whole problem's, then each with one constraint dropped, for the conflict).
+  int exclusion_boxes = 6000;
 };
 
 // Applies when every constraint is a built-in type with an exact value that the encodings take
