@@ -1,6 +1,5 @@
 #include "set_exclusion.hpp"
 
-#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -86,16 +85,18 @@ void addImpliedReaches(std::vector<Condition>* cs) {
     const Condition& c = (*cs)[i];
     if (c.kind != ConditionKind::kPointPlane || vec(c.d) != Vector3d::UnitX()) continue;
     double r2 = squareOf(std::max(std::abs(c.lo), std::abs(c.hi)));
-    int axes = 1;
+    int axes = 1;  // bit k: the offset along axis k is in
     for (std::size_t j = 0; j < n; ++j) {
       const Condition& e = (*cs)[j];
-      if (e.kind != ConditionKind::kPointPlane || e.source != c.source || e.p != c.p ||
-          e.q != c.q || !(vec(e.d) == Vector3d::UnitY() || vec(e.d) == Vector3d::UnitZ()))
+      if (e.kind != ConditionKind::kPointPlane || e.source != c.source || e.p != c.p || e.q != c.q)
         continue;
-      r2 += squareOf(std::max(std::abs(e.lo), std::abs(e.hi)));
-      ++axes;
+      for (int k = 1; k < 3; ++k)
+        if (vec(e.d) == Vector3d::Unit(k) && !(axes & (1 << k))) {
+          r2 += squareOf(std::max(std::abs(e.lo), std::abs(e.hi)));
+          axes |= 1 << k;
+        }
     }
-    if (axes != 3 || !std::isfinite(r2)) continue;
+    if (axes != 7 || !std::isfinite(r2)) continue;
     Condition ball = c;
     ball.kind = ConditionKind::kPointPoint;
     ball.d = {0.0, 0.0, 0.0};
@@ -220,8 +221,7 @@ bool rotationPart(const Condition& a, const Condition& b, Condition* out) {
     if (sign == 0.0) return false;
     // (x_a − q_a)·d − (x_b − q_b)·d = (R v)·d − w·d
     const double blo = sign > 0.0 ? b.lo : -b.hi, bhi = sign > 0.0 ? b.hi : -b.lo;
-    r.u = a.p, r.d = a.d;
-    r.u = {v[0], v[1], v[2]};
+    r.u = {v[0], v[1], v[2]}, r.d = a.d;
     r.lo = a.lo - bhi + w.dot(d), r.hi = a.hi - blo + w.dot(d);
   } else if (a.kind == K::kPointPoint && b.kind == K::kPointPoint) {
     if (!std::isfinite(a.hi) || !std::isfinite(b.hi)) return false;
@@ -387,22 +387,19 @@ Bound planesOnly(const std::vector<Condition>& cs, const std::vector<Slab>& slab
   return Bound::kBox;
 }
 
-// When every condition is an angle of one mobile direction u (or −u): turns the mobile frame so
-// that u is z (the conditions' u by a rotation M, M u ≈ z within rounding, which the ranges'
-// widening covers) and returns true. Every direction R u is then R' z for a rotation R' whose
-// quaternion has no z part (R' Rz(φ) for the φ that zeroes it): the rotation search is 2-D.
+// When every condition is an angle of one mobile direction u (or −u): replaces u by z (−u by
+// −z) and returns true. The conditions read the pose only through w = R u, and w ranges over
+// the sphere of radius |u| = 1 (within rounding, which the ranges' widening covers) whatever u
+// is: over all rotations, R z reaches the same values. Every direction R z is R' z for a
+// rotation R' whose quaternion has no z part (R' = R Rz(φ) for the φ that zeroes it): the
+// rotation search is 2-D. (Not a rotation M turning u onto z: one built in floating point is
+// not orthogonal enough where u is near −z, and the search would miss directions.)
 bool turnedOntoZ(std::vector<Condition>* cs) {
   if (cs->empty()) return false;
-  const Vector3d u(cs->front().u[0], cs->front().u[1], cs->front().u[2]);
-  for (const Condition& c : *cs) {
-    const Vector3d v(c.u[0], c.u[1], c.u[2]);
-    if (c.kind != ConditionKind::kCosine || (v != u && v != -u)) return false;
-  }
-  const Matrix3d M = Eigen::Quaterniond::FromTwoVectors(u, Vector3d::UnitZ()).toRotationMatrix();
-  for (Condition& c : *cs) {
-    const Vector3d v = M * Vector3d(c.u[0], c.u[1], c.u[2]);
-    c.u = {v[0], v[1], v[2]};
-  }
+  const Vector3d u = vec(cs->front().u);
+  for (const Condition& c : *cs)
+    if (c.kind != ConditionKind::kCosine || (vec(c.u) != u && vec(c.u) != -u)) return false;
+  for (Condition& c : *cs) c.u = {0.0, 0.0, vec(c.u) == u ? 1.0 : -1.0};
   return true;
 }
 

@@ -229,5 +229,37 @@ TEST(ConflictProof, AGapWithinTheToleranceIsNotProven) {
   }
 }
 
+// Two angle ranges on one mobile direction that overlap by 1e-7 rad (100 tolerances), the mobile
+// direction at or within 1e-5 rad of an axis either way (where a rotation built to turn it onto
+// z is least orthogonal): feasible, never proven inconsistent.
+TEST(ConflictProof, OverlappingAngleRangesNearAnAxisAreNotProven) {
+  Rng rng(7);
+  int tried = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {-1.0, 1.0})
+      for (double off : {0.0, 1e-6, 3e-6, 1e-5}) {
+        const Vector3d e = sign * Vector3d::Unit(axis), side = Vector3d::Unit((axis + 1) % 3);
+        const Vector3d u = (std::cos(off) * e + std::sin(off) * side).normalized();
+        const Vector3d f1 = rng.unit(), across = rng.perpendicular(f1);
+        const double apart = 0.9 - 1e-7;
+        const Vector3d f2 = std::cos(apart) * f1 + std::sin(apart) * across;
+        Problem p;
+        p.addFixedFeature("f1", Feature::makeLine(Vector3d::Zero(), f1));
+        p.addFixedFeature("f2", Feature::makeLine(Vector3d::UnitX(), f2));
+        p.addMobileFeature("u", Feature::makeLine(Vector3d::Zero(), u));
+        p.addConstraint("angle", "f1", "u");
+        p.constraints.back().has_value = false;
+        p.constraints.back().min = 0.0, p.constraints.back().max = 0.4;
+        p.addConstraint("angle", "f2", "u");
+        p.constraints.back().has_value = false;
+        p.constraints.back().min = 0.0, p.constraints.back().max = 0.5;
+        SCOPED_TRACE("axis " + std::to_string(axis) + " sign " + std::to_string(sign) + " off " +
+                     std::to_string(off));
+        EXPECT_FALSE(provenInconsistent(p, 6000));
+        ++tried;
+      }
+  EXPECT_EQ(tried, 24);
+}
+
 }  // namespace
 }  // namespace relpos::test
