@@ -195,6 +195,23 @@ bool certifyChart(const Chart& c, const std::array<double, 6>& radius, double* s
   return true;
 }
 
+bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
+                     const std::vector<double>& tolerance) {
+  double sigma = 0.0;
+  if (!certifyChart(c, std::array<double, 6>{}, &sigma)) return false;
+  std::vector<Condition> local;
+  inBaseFrame(extra, c.R0, c.t0, &local);
+  RoundUp rounding;
+  std::array<FI, 6> z;
+  for (int j = 0; j < 6; ++j) z[j] = j < c.d ? FI(0.0) : FI(-sigma, sigma);
+  std::vector<FI> value;
+  std::vector<std::array<FI, 6>> jac;
+  enclose(local, c.basis, z, boxOfY(c.basis, z), &value, &jac);
+  for (std::size_t i = 0; i < local.size(); ++i)
+    if (!inside(value[i], local[i].lo - tolerance[i], local[i].hi + tolerance[i])) return false;
+  return true;
+}
+
 bool growChart(Chart& c, double start, double limit) {
   std::array<double, 6> r{};
   for (int j = 0; j < c.d; ++j) r[j] = start;

@@ -41,6 +41,13 @@ bool certifyChart(const Chart& chart, const std::array<double, 6>& radius, doubl
 // certifyChart holds, up to `limit`; false when not even `start` holds.
 bool growChart(Chart& chart, double start, double limit);
 
+// Whether every condition of `extra` (in the system's frame) holds within `tolerance` (per
+// condition) at the exact pose of the chart's equations at θ = 0: Krawczyk's test proves that
+// pose within a slice about the base as thin as the base's residual allows, and the conditions'
+// enclosures over that slice are within their ranges so widened.
+bool holdAtExactBase(const Chart& chart, const std::vector<Condition>& extra,
+                     const std::vector<double>& tolerance);
+
 // The pose at θ (normalised): Newton's method on the slice.
 void chartPose(const Chart& chart, const std::array<double, 6>& theta, Matrix3d* R, Vector3d* t);
 

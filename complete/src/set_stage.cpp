@@ -6,6 +6,7 @@
 
 #include "chart_manifold.hpp"
 #include "conflict_search.hpp"
+#include "implied_equations.hpp"
 #include "point_search.hpp"
 #include "relpos/complete/stage.hpp"
 
@@ -45,6 +46,38 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
     if ((t2 - t).norm() + (R2 - R).norm() < 1e-7) return true;
   }
   return false;
+}
+
+// The chart at pose (R, t): of all the equations, or where they are dependent because the
+// angles pin the rotation, of those that are not implied there — the implied ones proven to
+// hold (within half the tolerance) at the chart's exact base, and so on its whole piece.
+bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, double length_tol,
+             double angle_tol, Chart* chart) {
+  if (detail::makeChart(s, R, t, chart)) return true;
+  ConditionSystem reduced;
+  std::vector<detail::Condition> dropped;
+  if (!detail::reduceWhereRotationPinned(s, R, t, &reduced, &dropped) ||
+      !detail::makeChart(reduced, R, t, chart))
+    return false;
+  std::vector<double> within;
+  for (const detail::Condition& c : dropped)
+    within.push_back(0.5 * (c.kind == detail::ConditionKind::kCosine ? angle_tol : length_tol));
+  return detail::holdAtExactBase(*chart, dropped, within);
+}
+
+// Whether the equations dropped as implied hold within the tolerance over the whole chart: its
+// poses' mobile points reach no further than its base's translation plus its box and slice.
+bool impliedHold(const Chart& chart, const std::vector<detail::ImpliedEquation>& implied,
+                 double length_tol, double angle_tol) {
+  double box = chart.m * chart.slice * chart.slice;
+  for (int j = 0; j < chart.d; ++j) box += chart.radius[j] * chart.radius[j];
+  for (const detail::ImpliedEquation& e : implied) {
+    const bool plane = e.condition.kind == detail::ConditionKind::kPointPlane;
+    const Vector3d p(e.condition.p[0], e.condition.p[1], e.condition.p[2]);
+    const double reach = p.norm() + chart.t0.norm() + std::sqrt(box);
+    if (!(detail::impliedViolation(e, reach) <= (plane ? length_tol : angle_tol))) return false;
+  }
+  return true;
 }
 
 // The chart's poses at its centre and at both ends of every axis of its box, checked against
@@ -107,7 +140,11 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   std::vector<Branch> branches;
   int points = 0;
   for (std::size_t a = 0; a < systems.size(); ++a) {
-    const ConditionSystem& s = systems[a];
+    // the charts' equations without those the others imply (the proof below keeps them all)
+    ConditionSystem s = systems[a];
+    const double length_tol = tol.length / s.frame.scale;
+    std::vector<detail::ImpliedEquation> implied;
+    detail::dropImpliedEquations(&s, length_tol, tol.angle, &implied);
     std::vector<std::shared_ptr<const ChartData>> charts;
     // the same starts for every alternative, whatever the constraints' order
     for (auto [R, t] : startPoses(problem, s, options.set_starts)) {
@@ -116,7 +153,9 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
-      if (!detail::makeChart(s, R, t, &data->chart) || !grown(data->chart)) continue;
+      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart) || !grown(data->chart) ||
+          !impliedHold(data->chart, implied, length_tol, tol.angle))
+        continue;
       data->frame = s.frame;
       const ChartManifold m(data);
       if (!verified(m, problem, registry, tol)) continue;

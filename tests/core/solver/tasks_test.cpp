@@ -25,7 +25,7 @@ namespace {
 // The tasks relpos answers today (feasible ones solved + infeasible ones proven inconsistent;
 // 28 + 6 of the 48 when the tasks were added, 38 + 6 with the numeric stage's charts): a floor
 // to raise as closed forms and the numeric stage grow, never to lower.
-constexpr int kTasksAnsweredFloor = 47;
+constexpr int kTasksAnsweredFloor = 48;
 
 Isometry3d poseOf(const nlohmann::json& j) {
   const auto p = j["position"].get<std::vector<double>>();

@@ -1,0 +1,44 @@
+#pragma once
+// Equations the others imply (docs/spec.md §8.7): constraints that share a mobile feature often
+// say some things twice — a point on a point and on a line through it, two parallelisms of one
+// axis — and their equations are then dependent everywhere on the set, so no pose of it is a
+// regular point of them all and no chart can be proven. Linear equations on one mobile point
+// (plane offsets: d·x = b, x = R p + t) or on one mobile direction (cosines: d·(R u) = b) are
+// reduced like a linear system: an equation whose normal lies in the span of the earlier ones
+// (to 1e-13) is implied by them up to its value's mismatch, and dropped when that is within the
+// tolerance. Its violation anywhere on the others' set is then at most the mismatch plus the
+// normal's residual times |x| (a cosine: times 1), which each chart checks for its own reach.
+#include <vector>
+
+#include "pose_conditions.hpp"
+
+namespace relpos::complete::detail {
+
+struct ImpliedEquation {
+  Condition condition;
+  double mismatch = 0.0;  // |b' − b|: the value the earlier equations give it, against its own
+  double residual = 0.0;  // |r|: its normal's distance from their span
+};
+
+// Drops from system->equations those the earlier ones imply within the tolerances (normalised
+// length; radians), into `dropped`.
+void dropImpliedEquations(ConditionSystem* system, double length_tolerance, double angle_tolerance,
+                          std::vector<ImpliedEquation>* dropped);
+
+// The largest violation of a dropped equation anywhere on the others' set within `reach` of the
+// origin (normalised): what a chart reaching that far must keep within the tolerance.
+double impliedViolation(const ImpliedEquation& e, double reach);
+
+// Where the equations are dependent at a pose (R0, t0) because the angle equations alone pin
+// the rotation (their Jacobian in the rotation's three coordinates has rank 3 there, so on any
+// connected piece of the set through the pose the rotation is that one pose's): every further
+// angle equation is a constant on such a piece, and so is every plane offset whose normal lies
+// in the span of the kept ones' (to 1e-13; the translation then enters it only through them).
+// Returns the system without those (`dropped`, in the system's frame), or false when the
+// rotation is not pinned there or nothing is dropped. The caller proves the dropped ones hold
+// at the exact pose of the kept ones (chart.hpp, holdAtExactBase): then on the whole piece.
+bool reduceWhereRotationPinned(const ConditionSystem& system, const Matrix3d& R0,
+                               const Vector3d& t0, ConditionSystem* reduced,
+                               std::vector<Condition>* dropped);
+
+}  // namespace relpos::complete::detail
