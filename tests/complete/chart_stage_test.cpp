@@ -122,6 +122,45 @@ TEST(ChartStage, Deterministic) {
   }
 }
 
+// A block against three faces of a fixture, the third contact a range (0-1 mm off the end
+// stop) — the third face's parallelism is implied by the first two, so the equations are
+// dependent everywhere on the set. In a world turned and moved at random: charts of the 1-DOF
+// slide, every pose meeting every constraint, the DOF the set's measured dimension.
+TEST(ChartStage, ThreeFaceContactsGiveTheSlideOfTheirRange) {
+  Rng rng(2019);
+  for (int i = 0; i < 20; ++i) {
+    SCOPED_TRACE("world " + std::to_string(i));
+    Problem p;
+    p.fixed.pose = rng.pose();
+    p.addFixedFeature("floor", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitZ()));
+    p.addFixedFeature("jaw", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitY()));
+    p.addFixedFeature("stop", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitX()));
+    const Vector3d size(rng.uniform(0.05, 0.3), rng.uniform(0.05, 0.3), rng.uniform(0.05, 0.3));
+    p.addMobileFeature("bottom", Feature::makePlane(Vector3d::Zero(), -Vector3d::UnitZ()));
+    p.addMobileFeature("side", Feature::makePlane(Vector3d(0, 0, size.z()), -Vector3d::UnitY()));
+    p.addMobileFeature("end", Feature::makePlane(Vector3d(0, size.y(), 0), -Vector3d::UnitX()));
+    p.addConstraint("coincident", "floor", "bottom", 0.0, Orientation::kOpposed);
+    p.addConstraint("coincident", "jaw", "side", 0.0, Orientation::kOpposed);
+    p.addConstraint("distance", "stop", "end", 0.0, Orientation::kOpposed);
+    p.constraints.back().has_value = false;
+    p.constraints.back().min = 0.0, p.constraints.back().max = 0.001;
+    p.mobile.pose = p.fixed.pose * Isometry3d(Eigen::Translation3d(0.0005, 0.0, 0.0));
+    ASSERT_LT(worstViolation(p, p.mobile.pose), 1e-9) << "generator bug";
+    const Solution s = solveByCharts(p);
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    std::mt19937_64 sampler(static_cast<std::uint64_t>(i));
+    for (const Branch& b : s.branches) {
+      const Manifold& m = *b.manifold;
+      EXPECT_EQ(m.dof(), 1);
+      EXPECT_EQ(localDof(p, m.pose(Params{})), 1);
+      for (int k = 0; k < 16; ++k) {
+        const Isometry3d X = m.pose(sampleParams(m, sampler));
+        EXPECT_LT(worstViolation(p, X), 1e-8) << poseText(X);
+      }
+    }
+  }
+}
+
 // No pose meets two ranges on one point that do not overlap: no chart, and the interval proof
 // that no pose exists names both.
 TEST(ChartStage, DisjointRangesAreProvenInconsistent) {
