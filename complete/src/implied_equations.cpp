@@ -1,6 +1,7 @@
 #include "implied_equations.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 
 namespace relpos::complete::detail {
@@ -84,32 +85,150 @@ constexpr double kRankGap = 1e-7;
 
 }  // namespace
 
-bool reduceWhereRotationPinned(const ConditionSystem& system, const Matrix3d& R0,
-                               const Vector3d& t0, ConditionSystem* reduced,
-                               std::vector<Condition>* dropped) {
+namespace {
+
+// A vector within this of a span (relative to its length) is in it: the structure of the
+// decompositions (the same vectors, their cross products), not a coincidence of the pose.
+bool inSpan(const Vector3d& v, const std::vector<Vector3d>& basis) {
+  Vector3d r = v;
+  for (const Vector3d& e : basis) r -= r.dot(e) * e;
+  return r.norm() <= kInSpan * v.norm();
+}
+
+// What the kept equations hold constant on any connected piece of their set through the base.
+struct Pinned {
+  bool rotation = false;                 // the angles' rank is 3 in the rotation's coordinates
+  std::vector<Vector3d> slides;          // with the rotation pinned: every plane row's normal
+  std::vector<std::array<double, 3>> u;  // per mobile direction: its (orthonormal) rows...
+  std::vector<std::vector<Vector3d>> rows, zero_rows;  // ...and those of value 0
+  std::vector<std::array<double, 3>> p;                // per mobile point: its plane rows' normals
+  std::vector<std::vector<Vector3d>> normals;
+
+  // The index of direction k (or −k) among `keys`, of point k with `point`; −1: none.
+  static int find(const std::vector<std::array<double, 3>>& keys, const std::array<double, 3>& k,
+                  bool point = false) {
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] == k || (!point && vec(keys[i]) == -vec(k))) return static_cast<int>(i);
+    return -1;
+  }
+  // A direction is pinned by two independent angle rows (then finitely many directions meet
+  // them) or by a pinned rotation.
+  bool direction(const std::array<double, 3>& d) const {
+    const int i = find(u, d);
+    return rotation || (i >= 0 && rows[static_cast<std::size_t>(i)].size() >= 2);
+  }
+  // The span of the point's coordinates held constant: its plane rows' normals (all of them
+  // with the rotation pinned: x = R p + t).
+  std::vector<Vector3d> held(const std::array<double, 3>& q) const {
+    if (rotation) return slides;
+    const int i = find(p, q, true);
+    return i < 0 ? std::vector<Vector3d>{} : normals[static_cast<std::size_t>(i)];
+  }
+  // A pinned direction perpendicular to the held span of point q (exactly: its value-0 angle
+  // rows span the same plane), or along it (their cross product in it).
+  bool across(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
+    const int i = find(u, d);
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    const std::vector<Vector3d> h = held(q);
+    for (const Vector3d& e : h)
+      if (!inSpan(e, zero_rows[static_cast<std::size_t>(i)])) return false;
+    return h.size() == 2;
+  }
+  bool along(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
+    const int i = find(u, d);
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
+    return inSpan(z[0].cross(z[1]), held(q));
+  }
+};
+
+// Whether equation c is a constant on the piece where `pinned` holds.
+bool constantWhere(const Condition& c, const Pinned& pinned) {
+  const std::size_t held = pinned.held(c.p).size();
+  switch (c.kind) {
+    case ConditionKind::kCosine:
+      return pinned.direction(c.u);
+    case ConditionKind::kPointPlane:
+      return inSpan(vec(c.d), pinned.held(c.p));
+    case ConditionKind::kPointPoint:
+      return held == 3;
+    case ConditionKind::kPointLine: {  // reads x across the fixed line d (to 1e-13 of it)
+      if (held == 3) return true;
+      const std::vector<Vector3d> h = pinned.held(c.p);
+      return h.size() == 2 && std::abs(h[0].dot(vec(c.d))) <= kInSpan &&
+             std::abs(h[1].dot(vec(c.d))) <= kInSpan;
+    }
+    case ConditionKind::kLinePoint:  // reads w and x across w
+      return pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p));
+    case ConditionKind::kPlanePoint:  // reads w and x along w
+      return pinned.direction(c.u) && (held == 3 || pinned.along(c.u, c.p));
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
+                     ConditionSystem* reduced, std::vector<Condition>* dropped) {
   dropped->clear();
   std::array<Dual<double>, 6> y;
   for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
   const LocalPose<Dual<double>> X(y);
-  std::vector<Vector3d> turns, slides;  // the kept angle rows (rotation part), plane normals
-  std::vector<bool> keep(system.equations.size(), true);
-  // the angles first: whether they pin the rotation
-  for (std::size_t i = 0; i < system.equations.size(); ++i) {
-    const Condition& c = system.equations[i];
-    if (c.kind != ConditionKind::kCosine) continue;
+  // the equations independent at the base (greedily, in their canonical order)
+  std::vector<Eigen::Matrix<double, 6, 1>> basis;
+  std::vector<bool> keep;
+  for (const Condition& c : system.equations) {
     const Dual<double> g = evaluate(inBaseFrame(c, R0, t0), X);
-    keep[i] = extendsSpan(Vector3d(g.g[0], g.g[1], g.g[2]), kRankGap, &turns);
+    Eigen::Matrix<double, 6, 1> r, v;
+    for (int j = 0; j < 6; ++j) v[j] = g.g[j];
+    r = v;
+    for (const auto& e : basis) r -= r.dot(e) * e;
+    const bool independent = r.norm() > kRankGap * std::max(1.0, v.norm());
+    if (independent) basis.push_back(r.normalized());
+    keep.push_back(independent);
   }
-  if (turns.size() < 3) return false;
-  for (std::size_t i = 0; i < system.equations.size(); ++i) {
+  if (std::find(keep.begin(), keep.end(), false) == keep.end()) return false;
+  // what the kept ones pin
+  Pinned pinned;
+  std::vector<Vector3d> turns;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
     const Condition& c = system.equations[i];
-    if (c.kind == ConditionKind::kPointPlane) keep[i] = extendsSpan(vec(c.d), kInSpan, &slides);
+    if (!keep[i]) continue;
+    if (c.kind == ConditionKind::kCosine) {
+      const Dual<double> g = evaluate(inBaseFrame(c, R0, t0), X);
+      extendsSpan(Vector3d(g.g[0], g.g[1], g.g[2]), kRankGap, &turns);
+      int k = Pinned::find(pinned.u, c.u);
+      if (k < 0) {
+        k = static_cast<int>(pinned.u.size());
+        pinned.u.push_back(c.u), pinned.rows.emplace_back(), pinned.zero_rows.emplace_back();
+      }
+      extendsSpan(vec(c.d), kInSpan, &pinned.rows[static_cast<std::size_t>(k)]);
+      if (c.lo == 0.0)
+        extendsSpan(vec(c.d), kInSpan, &pinned.zero_rows[static_cast<std::size_t>(k)]);
+    } else if (c.kind == ConditionKind::kPointPlane) {
+      extendsSpan(vec(c.d), kInSpan, &pinned.slides);
+      int k = Pinned::find(pinned.p, c.p, true);
+      if (k < 0) {
+        k = static_cast<int>(pinned.p.size());
+        pinned.p.push_back(c.p), pinned.normals.emplace_back();
+      }
+      extendsSpan(vec(c.d), kInSpan, &pinned.normals[static_cast<std::size_t>(k)]);
+    }
   }
+  pinned.rotation = turns.size() >= 3;
   *reduced = system;
   reduced->equations.clear();
-  for (std::size_t i = 0; i < system.equations.size(); ++i)
-    (keep[i] ? reduced->equations : *dropped).push_back(system.equations[i]);
-  return !dropped->empty();
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    const Condition& c = system.equations[i];
+    if (keep[i]) {
+      reduced->equations.push_back(c);
+    } else {
+      if (!constantWhere(c, pinned)) return false;
+      dropped->push_back(c);
+    }
+  }
+  return true;
 }
 
 double impliedViolation(const ImpliedEquation& e, double reach) {

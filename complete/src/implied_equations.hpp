@@ -29,16 +29,19 @@ void dropImpliedEquations(ConditionSystem* system, double length_tolerance, doub
 // origin (normalised): what a chart reaching that far must keep within the tolerance.
 double impliedViolation(const ImpliedEquation& e, double reach);
 
-// Where the equations are dependent at a pose (R0, t0) because the angle equations alone pin
-// the rotation (their Jacobian in the rotation's three coordinates has rank 3 there, so on any
-// connected piece of the set through the pose the rotation is that one pose's): every further
-// angle equation is a constant on such a piece, and so is every plane offset whose normal lies
-// in the span of the kept ones' (to 1e-13; the translation then enters it only through them).
-// Returns the system without those (`dropped`, in the system's frame), or false when the
-// rotation is not pinned there or nothing is dropped. The caller proves the dropped ones hold
-// at the exact pose of the kept ones (chart.hpp, holdAtExactBase): then on the whole piece.
-bool reduceWhereRotationPinned(const ConditionSystem& system, const Matrix3d& R0,
-                               const Vector3d& t0, ConditionSystem* reduced,
-                               std::vector<Condition>* dropped);
+// Where the equations are dependent at a pose (R0, t0): the ones independent there (greedily,
+// in order) are kept; each other one must be a constant on any connected piece of the kept
+// ones' set through the pose, by what the kept ones hold constant there — a direction pinned by
+// two angle rows (finitely many directions meet them) or every direction when the angles pin
+// the rotation (rank 3 in its coordinates), a mobile point's coordinates along its plane rows'
+// normals (every point's along every normal with the rotation pinned) — and what it reads of
+// them: an angle a pinned direction, a plane offset a held normal, a distance to a point a
+// point held whole, to a fixed line the point held across it, a fixed point's distance to a
+// mobile line (plane) its pinned direction and the point held across (along) it. Returns the
+// system without those (`dropped`, in the system's frame); false when some dependent equation
+// is not such a constant, or none is dependent. The caller proves the dropped ones hold at the
+// exact pose of the kept ones (chart.hpp, holdAtExactBase): then on the whole piece.
+bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
+                     ConditionSystem* reduced, std::vector<Condition>* dropped);
 
 }  // namespace relpos::complete::detail

@@ -48,15 +48,15 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
   return false;
 }
 
-// The chart at pose (R, t): of all the equations, or where they are dependent because the
-// angles pin the rotation, of those that are not implied there — the implied ones proven to
-// hold (within half the tolerance) at the chart's exact base, and so on its whole piece.
+// The chart at pose (R, t): of all the equations, or where they are dependent, of those
+// independent there, the others constants on the piece (implied_equations.hpp) proven to hold
+// (within half the tolerance) at the chart's exact base, and so on its whole piece.
 bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, double length_tol,
              double angle_tol, Chart* chart) {
   if (detail::makeChart(s, R, t, chart)) return true;
   ConditionSystem reduced;
   std::vector<detail::Condition> dropped;
-  if (!detail::reduceWhereRotationPinned(s, R, t, &reduced, &dropped) ||
+  if (!detail::reduceDependent(s, R, t, &reduced, &dropped) ||
       !detail::makeChart(reduced, R, t, chart))
     return false;
   std::vector<double> within;
