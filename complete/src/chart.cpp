@@ -207,8 +207,12 @@ bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
   std::vector<FI> value;
   std::vector<std::array<FI, 6>> jac;
   enclose(local, c.basis, z, boxOfY(c.basis, z), &value, &jac);
-  for (std::size_t i = 0; i < local.size(); ++i)
-    if (!inside(value[i], local[i].lo - tolerance[i], local[i].hi + tolerance[i])) return false;
+  // an equation's enclosure is of its residual g − value (evaluateAll)
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    const double lo = local[i].equation() ? 0.0 : local[i].lo;
+    const double hi = local[i].equation() ? 0.0 : local[i].hi;
+    if (!inside(value[i], lo - tolerance[i], hi + tolerance[i])) return false;
+  }
   return true;
 }
 

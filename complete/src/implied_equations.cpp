@@ -119,10 +119,22 @@ struct Pinned {
   }
   // The span of the point's coordinates held constant: its plane rows' normals (all of them
   // with the rotation pinned: x = R p + t).
+  // A point q differing from p along a pinned direction moves with it (x_q − x_p = R (q − p)
+  // is pinned): its coordinates along p's normals are held too (a plane offset folds its value
+  // into the plane's point, pose_conditions.cpp: the same plane, another point on its normal).
   std::vector<Vector3d> held(const std::array<double, 3>& q) const {
     if (rotation) return slides;
-    const int i = find(p, q, true);
-    return i < 0 ? std::vector<Vector3d>{} : normals[static_cast<std::size_t>(i)];
+    std::vector<Vector3d> span;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      bool moves_with = p[i] == q;
+      const Vector3d step = vec(q) - vec(p[i]);
+      for (std::size_t k = 0; k < u.size() && !moves_with; ++k)
+        moves_with = rows[k].size() >= 2 &&
+                     step.cross(vec(u[k])).norm() <= kInSpan * step.norm() * vec(u[k]).norm();
+      if (moves_with)
+        for (const Vector3d& n : normals[i]) extendsSpan(n, kInSpan, &span);
+    }
+    return span;
   }
   // A pinned direction perpendicular to the held span of point q (exactly: its value-0 angle
   // rows span the same plane), or along it (their cross product in it).
@@ -175,19 +187,22 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
   std::array<Dual<double>, 6> y;
   for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
   const LocalPose<Dual<double>> X(y);
-  // the equations independent at the base (greedily, in their canonical order)
+  // the equations independent at the base (greedily, in their canonical order): the linear
+  // ones first — what pins directions and points — then the others, which read them
   std::vector<Eigen::Matrix<double, 6, 1>> basis;
-  std::vector<bool> keep;
-  for (const Condition& c : system.equations) {
-    const Dual<double> g = evaluate(inBaseFrame(c, R0, t0), X);
-    Eigen::Matrix<double, 6, 1> r, v;
-    for (int j = 0; j < 6; ++j) v[j] = g.g[j];
-    r = v;
-    for (const auto& e : basis) r -= r.dot(e) * e;
-    const bool independent = r.norm() > kRankGap * std::max(1.0, v.norm());
-    if (independent) basis.push_back(r.normalized());
-    keep.push_back(independent);
-  }
+  std::vector<bool> keep(system.equations.size(), false);
+  for (const bool linear_pass : {true, false})
+    for (std::size_t i = 0; i < system.equations.size(); ++i) {
+      const Condition& c = system.equations[i];
+      if (linear(c) != linear_pass) continue;
+      const Dual<double> g = evaluate(inBaseFrame(c, R0, t0), X);
+      Eigen::Matrix<double, 6, 1> r, v;
+      for (int j = 0; j < 6; ++j) v[j] = g.g[j];
+      r = v;
+      for (const auto& e : basis) r -= r.dot(e) * e;
+      keep[i] = r.norm() > kRankGap * std::max(1.0, v.norm());
+      if (keep[i]) basis.push_back(r.normalized());
+    }
   if (std::find(keep.begin(), keep.end(), false) == keep.end()) return false;
   // what the kept ones pin
   Pinned pinned;

@@ -1,6 +1,7 @@
 #include "point_search.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "chart.hpp"
@@ -65,14 +66,23 @@ void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& i
   out->cost = out->r.squaredNorm();
 }
 
-bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t) {
+bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t,
+           const EquationSlack& slack) {
   std::vector<Condition> eq, in;
   inBaseFrame(s.equations, R, t, &eq);
   inBaseFrame(s.inequalities, R, t, &in);
   const std::array<double, 6> y{};
   const LocalPose<double> X(y);
-  for (const Condition& c : eq)
-    if (!(std::abs(evaluate(c, X) - c.lo) <= 1e-12)) return false;
+  for (const Condition& c : eq) {
+    const double off = std::abs(evaluate(c, X) - c.lo);
+    if (off <= 1e-12) continue;
+    const bool squared = c.kind == ConditionKind::kPointPoint ||
+                         c.kind == ConditionKind::kPointLine || c.kind == ConditionKind::kLinePoint;
+    const double allowed = c.kind == ConditionKind::kCosine ? slack.angle
+                           : squared ? 2.0 * std::sqrt(std::max(c.lo, 0.0)) * slack.length
+                                     : slack.length;
+    if (!(off <= allowed)) return false;
+  }
   for (const Condition& c : in) {
     const double g = evaluate(c, X);
     if (!(c.lo < g && g < c.hi)) return false;
@@ -122,11 +132,11 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
 
 }  // namespace
 
-bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t) {
+bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t, const EquationSlack& slack) {
   for (double shrink : kShrinks) {
     descend(s, shrink, R, t);
     if (!R->allFinite() || !t->allFinite()) return false;
-    if (holds(s, *R, *t)) return true;
+    if (holds(s, *R, *t, slack)) return true;
     if (s.inequalities.empty()) return false;  // the shrink changes nothing
   }
   return false;

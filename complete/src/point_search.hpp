@@ -7,8 +7,15 @@
 
 namespace relpos::complete::detail {
 
-// From (R, t) (normalised, in place): true when the equations hold to 1e-12 and every
-// inequality strictly.
-bool findPoint(const ConditionSystem& system, Matrix3d* R, Vector3d* t);
+// From (R, t) (normalised, in place): true when the equations hold to 1e-12 — or to the
+// slack given, lengths and angles apart: a far-placed problem's rounding may leave equations
+// that say one thing twice a little apart, no pose meeting both to 1e-12 — and every inequality
+// strictly.
+struct EquationSlack {
+  double length = 1e-12;  // normalised units (a squared distance: its square root's)
+  double angle = 1e-12;
+};
+bool findPoint(const ConditionSystem& system, Matrix3d* R, Vector3d* t,
+               const EquationSlack& slack = EquationSlack());
 
 }  // namespace relpos::complete::detail

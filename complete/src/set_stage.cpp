@@ -60,8 +60,14 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
       !detail::makeChart(reduced, R, t, chart))
     return false;
   std::vector<double> within;
-  for (const detail::Condition& c : dropped)
-    within.push_back(0.5 * (c.kind == detail::ConditionKind::kCosine ? angle_tol : length_tol));
+  for (const detail::Condition& c : dropped) {
+    // half the tolerance, in the condition's units: a squared distance d² moves by 2·d·δ
+    const bool squared = c.kind == detail::ConditionKind::kPointPoint ||
+                         c.kind == detail::ConditionKind::kPointLine ||
+                         c.kind == detail::ConditionKind::kLinePoint;
+    const double half = 0.5 * (c.kind == detail::ConditionKind::kCosine ? angle_tol : length_tol);
+    within.push_back(squared ? 2.0 * std::sqrt(std::max(c.lo, 0.0)) * half : half);
+  }
   return detail::holdAtExactBase(*chart, dropped, within);
 }
 
@@ -145,11 +151,16 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
     const double length_tol = tol.length / s.frame.scale;
     std::vector<detail::ImpliedEquation> implied;
     detail::dropImpliedEquations(&s, length_tol, tol.angle, &implied);
+    // equations said twice may be apart by the rounding of a far-placed problem: a pose meeting
+    // them to a thousandth of the tolerance is found (the chart's proof then takes the exact one)
+    detail::EquationSlack slack;
+    slack.length = std::max(slack.length, 1e-3 * length_tol);
+    slack.angle = std::max(slack.angle, 1e-3 * tol.angle);
     std::vector<std::shared_ptr<const ChartData>> charts;
     // the same starts for every alternative, whatever the constraints' order
     for (auto [R, t] : startPoses(problem, s, options.set_starts)) {
       if (static_cast<int>(branches.size()) >= options.max_charts) break;
-      if (!detail::findPoint(s, &R, &t)) continue;
+      if (!detail::findPoint(s, &R, &t, slack)) continue;
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
