@@ -55,10 +55,9 @@ void dropImpliedEquations(ConditionSystem* system, double length_tolerance, doub
       const double residual = (d - N * alpha).norm();
       if (residual <= kInSpan * d.norm()) {
         const double mismatch = std::abs(alpha.dot(b) - valueOf(c));
-        const double tol =
-            c.kind == ConditionKind::kPointPlane ? length_tolerance : angle_tolerance;
+        const double tol = toleranceInUnits(c, length_tolerance, angle_tolerance);
         if (mismatch <= 0.5 * tol && std::isfinite(mismatch)) {
-          dropped->push_back({c, mismatch, residual});
+          dropped->push_back({c, mismatch, residual, alpha.lpNorm<1>()});
           continue;
         }
       }
@@ -246,10 +245,10 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
   return true;
 }
 
-double impliedViolation(const ImpliedEquation& e, double reach) {
-  // d·z − b = (b' − b) + r·z on the others' set, |z| ≤ reach (a direction: 1)
+double impliedViolation(const ImpliedEquation& e, double reach, double earlier) {
+  // d·z − b = (b' − b) + Σα_k (n_k·z − b_k) + r·z, |z| ≤ reach (a direction: 1)
   const double z = e.condition.kind == ConditionKind::kPointPlane ? reach : 1.0;
-  return e.mismatch + e.residual * z;
+  return e.mismatch + e.weight * earlier + e.residual * z;
 }
 
 }  // namespace relpos::complete::detail

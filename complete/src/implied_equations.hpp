@@ -18,6 +18,7 @@ struct ImpliedEquation {
   Condition condition;
   double mismatch = 0.0;  // |b' − b|: the value the earlier equations give it, against its own
   double residual = 0.0;  // |r|: its normal's distance from their span
+  double weight = 0.0;    // Σ|α|: how much the earlier equations' own errors move it
 };
 
 // Drops from system->equations those the earlier ones imply within the tolerances (normalised
@@ -25,9 +26,11 @@ struct ImpliedEquation {
 void dropImpliedEquations(ConditionSystem* system, double length_tolerance, double angle_tolerance,
                           std::vector<ImpliedEquation>* dropped);
 
-// The largest violation of a dropped equation anywhere on the others' set within `reach` of the
-// origin (normalised): what a chart reaching that far must keep within the tolerance.
-double impliedViolation(const ImpliedEquation& e, double reach);
+// The largest violation of a dropped equation anywhere within `reach` of the origin (normalised)
+// where the earlier equations hold to `earlier` (0: exactly; a chart that itself dropped some of
+// them holds those only to what it proved): what a chart reaching that far must keep within the
+// tolerance.
+double impliedViolation(const ImpliedEquation& e, double reach, double earlier);
 
 // Where the equations are dependent at a pose (R0, t0): the ones independent there (greedily,
 // in order) are kept; each other one must be a constant on any connected piece of the kept

@@ -76,11 +76,7 @@ bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t,
   for (const Condition& c : eq) {
     const double off = std::abs(evaluate(c, X) - c.lo);
     if (off <= 1e-12) continue;
-    const bool squared = c.kind == ConditionKind::kPointPoint ||
-                         c.kind == ConditionKind::kPointLine || c.kind == ConditionKind::kLinePoint;
-    const double allowed = c.kind == ConditionKind::kCosine ? slack.angle
-                           : squared ? 2.0 * std::sqrt(std::max(c.lo, 0.0)) * slack.length
-                                     : slack.length;
+    const double allowed = toleranceInUnits(c, slack.length, slack.angle);
     if (!(off <= allowed)) return false;
   }
   for (const Condition& c : in) {

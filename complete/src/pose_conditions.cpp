@@ -301,6 +301,19 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
   return worst;
 }
 
+double toleranceInUnits(const Condition& c, double length, double angle) {
+  switch (c.kind) {
+    case ConditionKind::kCosine:
+      return angle * std::sqrt(std::max(0.0, 1.0 - c.lo * c.lo));
+    case ConditionKind::kPointPoint:
+    case ConditionKind::kPointLine:
+    case ConditionKind::kLinePoint:
+      return 2.0 * std::sqrt(std::max(c.lo, 0.0)) * length;
+    default:
+      return length;
+  }
+}
+
 Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0) {
   Condition r = c;
   const Vector3d q(c.q[0], c.q[1], c.q[2]), d(c.d[0], c.d[1], c.d[2]);

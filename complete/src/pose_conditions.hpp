@@ -66,6 +66,12 @@ double largestMagnitude(const Problem& p);
 double worstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
                       const Isometry3d& X);
 
+// How far condition c's value may be from its target for the constraint to be off by at most a
+// length δ (normalised) or an angle α, to first order in the condition's own units: a length δ;
+// a squared distance d² by 2·d·δ; a cosine cos θ by α·sin θ (an angle near 0 or π moves its
+// cosine least). The value is the condition's own (an equation's), lo.
+double toleranceInUnits(const Condition& c, double length, double angle);
+
 // The conditions with their fixed data moved into the frame of the base pose (R0, t0): then the
 // pose R0·Q(a, b, c), t0 + R0·τ has the coordinates y = (a, b, c, τ), and y = 0 is the base.
 Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0);

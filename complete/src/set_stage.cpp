@@ -51,22 +51,26 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
 // The chart at pose (R, t): of all the equations, or where they are dependent, of those
 // independent there, the others constants on the piece (implied_equations.hpp) proven to hold
 // (within half the tolerance) at the chart's exact base, and so on its whole piece.
+// `earlier`: how far the dropped ones may be off on the chart, per kind (0: none dropped).
+struct DroppedSlack {
+  double cosine = 0.0, plane = 0.0;
+};
+
 bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, double length_tol,
-             double angle_tol, Chart* chart) {
+             double angle_tol, Chart* chart, DroppedSlack* earlier) {
+  *earlier = DroppedSlack();
   if (detail::makeChart(s, R, t, chart)) return true;
   ConditionSystem reduced;
   std::vector<detail::Condition> dropped;
   if (!detail::reduceDependent(s, R, t, &reduced, &dropped) ||
       !detail::makeChart(reduced, R, t, chart))
     return false;
+  // half the tolerance, in each condition's units
   std::vector<double> within;
   for (const detail::Condition& c : dropped) {
-    // half the tolerance, in the condition's units: a squared distance d² moves by 2·d·δ
-    const bool squared = c.kind == detail::ConditionKind::kPointPoint ||
-                         c.kind == detail::ConditionKind::kPointLine ||
-                         c.kind == detail::ConditionKind::kLinePoint;
-    const double half = 0.5 * (c.kind == detail::ConditionKind::kCosine ? angle_tol : length_tol);
-    within.push_back(squared ? 2.0 * std::sqrt(std::max(c.lo, 0.0)) * half : half);
+    within.push_back(detail::toleranceInUnits(c, 0.5 * length_tol, 0.5 * angle_tol));
+    double& worst = c.kind == detail::ConditionKind::kCosine ? earlier->cosine : earlier->plane;
+    worst = std::max(worst, within.back());
   }
   return detail::holdAtExactBase(*chart, dropped, within);
 }
@@ -74,14 +78,15 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
 // Whether the equations dropped as implied hold within the tolerance over the whole chart: its
 // poses' mobile points reach no further than its base's translation plus its box and slice.
 bool impliedHold(const Chart& chart, const std::vector<detail::ImpliedEquation>& implied,
-                 double length_tol, double angle_tol) {
+                 const DroppedSlack& earlier, double length_tol, double angle_tol) {
   double box = chart.m * chart.slice * chart.slice;
   for (int j = 0; j < chart.d; ++j) box += chart.radius[j] * chart.radius[j];
   for (const detail::ImpliedEquation& e : implied) {
     const bool plane = e.condition.kind == detail::ConditionKind::kPointPlane;
     const Vector3d p(e.condition.p[0], e.condition.p[1], e.condition.p[2]);
     const double reach = p.norm() + chart.t0.norm() + std::sqrt(box);
-    if (!(detail::impliedViolation(e, reach) <= (plane ? length_tol : angle_tol))) return false;
+    const double off = detail::impliedViolation(e, reach, plane ? earlier.plane : earlier.cosine);
+    if (!(off <= detail::toleranceInUnits(e.condition, length_tol, angle_tol))) return false;
   }
   return true;
 }
@@ -164,8 +169,9 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
-      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart) || !grown(data->chart) ||
-          !impliedHold(data->chart, implied, length_tol, tol.angle))
+      DroppedSlack earlier;
+      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) || !grown(data->chart) ||
+          !impliedHold(data->chart, implied, earlier, length_tol, tol.angle))
         continue;
       data->frame = s.frame;
       const ChartManifold m(data);

@@ -233,6 +233,37 @@ TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
     }
 }
 
+// An angle equation implied by two others on the same mobile direction (its fixed direction in
+// their span), its value off by 0.45 tolerances in cosine — which near 0 rad is several
+// tolerances in angle. Dropped or not, no pose of a chart may break it by more than one
+// tolerance (the cosine's allowance is the angle's times sin θ).
+TEST(ChartStage, AnImpliedAngleIsHeldToTheToleranceInAngle) {
+  for (double eps : {0.05, 0.1, 0.3}) {
+    SCOPED_TRACE("angle to the x axis " + std::to_string(eps));
+    Problem p;
+    const Vector3d da(0.6, 0.8, 0), db(0.6, -0.8, 0), dc(1, 0, 0);
+    p.addFixedFeature("a", Feature::makeLine(Vector3d::Zero(), da));
+    p.addFixedFeature("b", Feature::makeLine(Vector3d(0, 0, 1), db));
+    p.addFixedFeature("c", Feature::makeLine(Vector3d(0, 1, 0), dc));
+    p.addMobileFeature("L", Feature::makeLine(Vector3d(0.3, 0.2, 0.1), Vector3d::UnitX()));
+    Isometry3d X = Isometry3d::Identity();
+    X.linear() = Eigen::AngleAxisd(-eps, Vector3d::UnitY()).toRotationMatrix();
+    const Vector3d w = X.linear() * Vector3d::UnitX();
+    p.addConstraint("angle", "a", "L", std::acos(w.dot(da)));
+    p.addConstraint("angle", "b", "L", std::acos(w.dot(db)));
+    const Tolerance tol = toleranceOf(p);
+    p.addConstraint("angle", "c", "L", std::acos(std::cos(eps) - 0.45 * tol.angle));
+    p.mobile.pose = X;
+    const Solution s = solveByCharts(p);
+    std::mt19937_64 sampler(3);
+    for (const Branch& b : s.branches)
+      for (int k = 0; k < 24; ++k) {
+        const Isometry3d Y = b.manifold->pose(sampleParams(*b.manifold, sampler));
+        EXPECT_LE(worstViolation(p, Y), 1.0 * tol.angle) << poseText(Y);
+      }
+  }
+}
+
 // No pose meets two ranges on one point that do not overlap: no chart, and the interval proof
 // that no pose exists names both.
 TEST(ChartStage, DisjointRangesAreProvenInconsistent) {
