@@ -10,6 +10,9 @@ namespace {
 // A normal within this of the earlier ones' span is in it (dependent everywhere, not by a
 // coincidence of the pose): far below any tolerance, far above the rounding of normalised data.
 constexpr double kInSpan = 1e-13;
+// A cosine this small is a right angle's (cos(π/2) rounds to 6e-17): its row holds the direction
+// across its normal to within this times the reach, far below any tolerance.
+constexpr double kZeroCosine = 1e-15;
 
 Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
@@ -173,6 +176,9 @@ bool constantWhere(const Condition& c, const Pinned& pinned) {
       return pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p));
     case ConditionKind::kPlanePoint:  // reads w and x along w
       return pinned.direction(c.u) && (held == 3 || pinned.along(c.u, c.p));
+    case ConditionKind::kSkew:
+    case ConditionKind::kSkewSquared:  // reads w and x along w × d, across w
+      return pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p));
     default:
       return false;
   }
@@ -218,7 +224,7 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
         pinned.u.push_back(c.u), pinned.rows.emplace_back(), pinned.zero_rows.emplace_back();
       }
       extendsSpan(vec(c.d), kInSpan, &pinned.rows[static_cast<std::size_t>(k)]);
-      if (c.lo == 0.0)
+      if (std::abs(c.lo) <= kZeroCosine)
         extendsSpan(vec(c.d), kInSpan, &pinned.zero_rows[static_cast<std::size_t>(k)]);
     } else if (c.kind == ConditionKind::kPointPlane) {
       extendsSpan(vec(c.d), kInSpan, &pinned.slides);

@@ -40,7 +40,8 @@ double impliedViolation(const ImpliedEquation& e, double reach, double earlier);
 // normals (every point's along every normal with the rotation pinned) — and what it reads of
 // them: an angle a pinned direction, a plane offset a held normal, a distance to a point a
 // point held whole, to a fixed line the point held across it, a fixed point's distance to a
-// mobile line (plane) its pinned direction and the point held across (along) it. Returns the
+// mobile line (plane) its pinned direction and the point held across (along) it, a skew
+// distance of a mobile line its pinned direction and the point held across it. Returns the
 // system without those (`dropped`, in the system's frame); false when some dependent equation
 // is not such a constant, or none is dependent. The caller proves the dropped ones hold at the
 // exact pose of the kept ones (chart.hpp, holdAtExactBase): then on the whole piece.

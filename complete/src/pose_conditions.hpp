@@ -69,7 +69,9 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
 // How far condition c's value may be from its target for the constraint to be off by at most a
 // length δ (normalised) or an angle α, to first order in the condition's own units: a length δ;
 // a squared distance d² by 2·d·δ; a cosine cos θ by α·sin θ (an angle near 0 or π moves its
-// cosine least). The value is the condition's own (an equation's), lo.
+// cosine least). The value is the condition's own (an equation's), lo. A skew condition's is
+// the length's, an upper bound only (its value moves by |n|·δ, |n| ≤ 1: set_stage.cpp reads |n|
+// at the pose where it must be a tolerance).
 double toleranceInUnits(const Condition& c, double length, double angle);
 
 // The conditions with their fixed data moved into the frame of the base pose (R0, t0): then the

@@ -68,7 +68,18 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
   // half the tolerance, in each condition's units
   std::vector<double> within;
   for (const detail::Condition& c : dropped) {
-    within.push_back(detail::toleranceInUnits(c, 0.5 * length_tol, 0.5 * angle_tol));
+    double allowed = detail::toleranceInUnits(c, 0.5 * length_tol, 0.5 * angle_tol);
+    if (c.kind == detail::ConditionKind::kSkew || c.kind == detail::ConditionKind::kSkewSquared) {
+      // h = (x − q)·n with |n| = sin of the lines' angle (constant here: the direction is
+      // pinned): a distance δ is h by |n|·δ, h² − k|n|² by 2·√k·|n|²·δ; |n| read at the base,
+      // less a margin far beyond how far the exact base is
+      const Vector3d u(c.u[0], c.u[1], c.u[2]), d(c.d[0], c.d[1], c.d[2]);
+      const double n = 0.9 * (R * u).cross(d).norm();
+      allowed = c.kind == detail::ConditionKind::kSkew
+                    ? n * allowed
+                    : 2.0 * std::sqrt(std::max(c.k, 0.0)) * n * n * allowed;
+    }
+    within.push_back(allowed);
     double& worst = c.kind == detail::ConditionKind::kCosine ? earlier->cosine : earlier->plane;
     worst = std::max(worst, within.back());
   }

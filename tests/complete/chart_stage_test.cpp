@@ -168,7 +168,8 @@ TEST(ChartStage, ThreeFaceContactsGiveTheSlideOfTheirRange) {
 // distance from another fixed point (DOF 3, the turns about it); a line on a line and a fixed
 // point at its distance from the mobile line (DOF 2); a face on a face and a fixed point at its
 // offset from the mobile face (DOF 3). The second constraint's equations are dependent on the
-// first's everywhere: charts of the first's set, every pose meeting both, the DOF measured.
+// first's everywhere: charts of the first's set, every pose meeting both, the DOF measured. (Also
+// a line on a line and its skew distance to another fixed line: DOF 2.)
 struct Repeated {
   const char* label;
   int dof;
@@ -194,6 +195,18 @@ void lineOnLineAndAPointsDistance(Problem& p, Rng& rng, const Isometry3d& X) {
   p.addConstraint("distance", "post", "axis", ((q - a) - (q - a).dot(w) * w).norm());
 }
 
+void lineOnLineAndASkewDistance(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), u = rng.unit(), b = rng.point(), e = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * u;
+  p.addFixedFeature("rail", Feature::makeLine(a, w));
+  p.addFixedFeature("beam", Feature::makeLine(b, e));
+  p.addMobileFeature("axis", Feature::makeLine(m, u));
+  p.addConstraint("coincident", "rail", "axis");
+  const Vector3d n = w.cross(e).normalized();
+  p.addConstraint("distance", "beam", "axis", std::abs((a - b).dot(n)));
+  p.constraints.back().parallel = false;  // the skew distance
+}
+
 void faceOnFaceAndAPointsOffset(Problem& p, Rng& rng, const Isometry3d& X) {
   const Vector3d m = rng.point(0.5), n = rng.unit(), q = rng.point();
   const Vector3d a = X * m, w = X.linear() * n;
@@ -207,6 +220,7 @@ void faceOnFaceAndAPointsOffset(Problem& p, Rng& rng, const Isometry3d& X) {
 TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
   const Repeated cases[] = {{"point on point", 3, pointOnPointAndItsDistance},
                             {"line on line", 2, lineOnLineAndAPointsDistance},
+                            {"line on line, skew", 2, lineOnLineAndASkewDistance},
                             {"face on face", 3, faceOnFaceAndAPointsOffset}};
   Rng rng(2020);
   std::mt19937_64 sampler(20);
