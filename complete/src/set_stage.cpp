@@ -48,14 +48,15 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
   return false;
 }
 
-// The chart at pose (R, t): of all the equations, or where they are dependent, of those
-// independent there, the others constants on the piece (implied_equations.hpp) proven to hold
-// (within half the tolerance) at the chart's exact base, and so on its whole piece.
-// `earlier`: how far the dropped ones may be off on the chart, per kind (0: none dropped).
+// How far the equations a chart dropped as constants may be off on it, per kind (0: none
+// dropped): what an implied equation that follows from them may be off by besides its own.
 struct DroppedSlack {
   double cosine = 0.0, plane = 0.0;
 };
 
+// The chart at pose (R, t): of all the equations, or where they are dependent, of those
+// independent there, the others constants on the piece (implied_equations.hpp) proven to hold
+// (within half the tolerance) at the chart's exact base, and so on its whole piece.
 bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, double length_tol,
              double angle_tol, Chart* chart, DroppedSlack* earlier) {
   *earlier = DroppedSlack();
