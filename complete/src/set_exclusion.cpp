@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <tuple>
 
 #include "exclusion_conditions.hpp"
@@ -12,7 +11,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // A box narrower than this in every coordinate that no condition excludes: a pose of the
 // widened conditions, or too near one to tell; nothing is proven.
 constexpr double kSmallest = 1e-9;
