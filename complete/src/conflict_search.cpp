@@ -48,7 +48,7 @@ SourceMask readingOnly(const std::vector<ConditionSystem>& systems, Reading read
   for (const ConditionSystem& s : systems)
     for (const auto* list : {&s.equations, &s.inequalities})
       for (const Condition& c : *list) {
-        const SourceMask b = SourceMask{1} << (c.source % 64);
+        const SourceMask b = sourceBit(c.source);
         seen |= b;
         const bool plane =
             c.kind == ConditionKind::kPointPlane &&

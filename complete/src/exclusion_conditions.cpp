@@ -9,11 +9,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-SourceMask bit(int source) { return SourceMask{1} << (source % 64); }
-
 double squareOf(double x) { return x * x; }
-
-Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 // The rounding of the normalised data (a few operations on numbers ~1): every range is widened
 // by at least this much besides the tolerances.
@@ -165,14 +161,14 @@ void withRotationParts(const std::vector<Condition>& cs, std::vector<Condition>*
                        std::vector<SourceMask>* sources) {
   *out = cs;
   sources->clear();
-  for (const Condition& c : cs) sources->push_back(bit(c.source));
+  for (const Condition& c : cs) sources->push_back(sourceBit(c.source));
   for (std::size_t i = 0; i < cs.size(); ++i)
     for (std::size_t j = 0; j < cs.size(); ++j) {
       Condition r;
       if (i == j || (cs[i].kind == cs[j].kind && j < i) || !rotationPart(cs[i], cs[j], &r))
         continue;
       out->push_back(r);
-      sources->push_back(bit(cs[i].source) | bit(cs[j].source));
+      sources->push_back(sourceBit(cs[i].source) | sourceBit(cs[j].source));
     }
 }
 

@@ -16,7 +16,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 std::vector<Slab> translationSlabs(const std::vector<Condition>& cs) {
   std::vector<Slab> slabs;
   for (const Condition& c : cs) {
-    const Vector3d p(c.p[0], c.p[1], c.p[2]), q(c.q[0], c.q[1], c.q[2]), d(c.d[0], c.d[1], c.d[2]);
+    const Vector3d p = vec(c.p), q = vec(c.q), d = vec(c.d);
     if (c.kind == ConditionKind::kPointPoint && std::isfinite(c.hi)) {
       ballSlabs(q, p.norm() + std::sqrt(std::max(c.hi, 0.0)), &slabs, c.source);
     } else if (c.kind == ConditionKind::kPointPlane && std::isfinite(c.lo) && std::isfinite(c.hi)) {

@@ -14,8 +14,6 @@ constexpr double kInSpan = 1e-13;
 // across its normal to within this times the reach, far below any tolerance.
 constexpr double kZeroCosine = 1e-15;
 
-Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-
 bool linear(const Condition& c) {
   return c.kind == ConditionKind::kPointPlane || c.kind == ConditionKind::kCosine;
 }

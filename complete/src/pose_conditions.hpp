@@ -34,6 +34,12 @@ enum class ConditionKind : unsigned char {
   kSkewSquared,  // ((x − q)·n)² − k |n|², n = R u × d: the skew distance's square minus k
 };
 
+// A condition's stored vector as Eigen's.
+inline Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
+// The mask bit of input constraint `source` (constraints from 64 on share bit source mod 64).
+inline SourceMask sourceBit(int source) { return SourceMask{1} << (source % 64); }
+
 struct Condition {
   ConditionKind kind = ConditionKind::kPointPoint;
   std::array<double, 3> p{}, u{};  // mobile point and direction (mobile frame, normalised)

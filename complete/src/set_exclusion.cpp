@@ -17,8 +17,6 @@ constexpr double kSmallest = 1e-9;
 // A contraction that keeps more than this fraction of a coordinate is not worth recording.
 constexpr double kWorthwhile = 0.9;
 
-SourceMask bit(int source) { return SourceMask{1} << (source % 64); }
-
 using Box = std::array<FI, 6>;
 
 struct Node {
@@ -34,8 +32,7 @@ FI allowedRange(const Condition& c) {
 
 // An upper bound on |u| |d| (a rotation keeps lengths): rounded up far beyond the rounding.
 double rotatedReach(const Condition& c) {
-  const Vector3d u(c.u[0], c.u[1], c.u[2]), d(c.d[0], c.d[1], c.d[2]);
-  return u.norm() * d.norm() * (1.0 + 1e-12) + 1e-300;
+  return vec(c.u).norm() * vec(c.d).norm() * (1.0 + 1e-12) + 1e-300;
 }
 
 // One quaternion chart of the search: the conditions in its base's frame, and W mapping the
@@ -124,7 +121,7 @@ PoseExclusion excludeEveryPose(const ConditionSystem& system, SourceMask active,
   std::vector<Condition> widened;
   for (const auto* list : {&system.equations, &system.inequalities})
     for (const Condition& c : *list)
-      if (active & bit(c.source))
+      if (active & sourceBit(c.source))
         widen(c, options.length_tolerance, options.angle_tolerance, &widened);
   addImpliedReaches(&widened);
   const Matrix3d F = alignedFrame(widened);
@@ -137,7 +134,7 @@ PoseExclusion excludeEveryPose(const ConditionSystem& system, SourceMask active,
   Vector3d tlo = Vector3d::Zero(), thi = Vector3d::Zero();
   if (moves) {
     const std::vector<Slab> slabs = translationSlabs(world);
-    for (const Slab& sl : slabs) r.used |= bit(sl.source);
+    for (const Slab& sl : slabs) r.used |= sourceBit(sl.source);
     Bound b = boundingBox(slabs, 0.0, &tlo, &thi);
     if (b == Bound::kUnbounded) b = planesOnly(world, slabs, &T, &tlo, &thi);
     if (b == Bound::kEmpty) {

@@ -74,8 +74,7 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
       // h = (x − q)·n with |n| = sin of the lines' angle (constant here: the direction is
       // pinned): a distance δ is h by |n|·δ, h² − k|n|² by 2·√k·|n|²·δ; |n| read at the base,
       // less a margin far beyond how far the exact base is
-      const Vector3d u(c.u[0], c.u[1], c.u[2]), d(c.d[0], c.d[1], c.d[2]);
-      const double n = 0.9 * (R * u).cross(d).norm();
+      const double n = 0.9 * (R * detail::vec(c.u)).cross(detail::vec(c.d)).norm();
       allowed = c.kind == detail::ConditionKind::kSkew
                     ? n * allowed
                     : 2.0 * std::sqrt(std::max(c.k, 0.0)) * n * n * allowed;
@@ -95,8 +94,7 @@ bool impliedHold(const Chart& chart, const std::vector<detail::ImpliedEquation>&
   for (int j = 0; j < chart.d; ++j) box += chart.radius[j] * chart.radius[j];
   for (const detail::ImpliedEquation& e : implied) {
     const bool plane = e.condition.kind == detail::ConditionKind::kPointPlane;
-    const Vector3d p(e.condition.p[0], e.condition.p[1], e.condition.p[2]);
-    const double reach = p.norm() + chart.t0.norm() + std::sqrt(box);
+    const double reach = detail::vec(e.condition.p).norm() + chart.t0.norm() + std::sqrt(box);
     const double off = detail::impliedViolation(e, reach, plane ? earlier.plane : earlier.cosine);
     if (!(off <= detail::toleranceInUnits(e.condition, length_tol, angle_tol))) return false;
   }

@@ -234,7 +234,6 @@ TEST(ConflictProof, AGapWithinTheToleranceIsNotProven) {
 // z is least orthogonal): feasible, never proven inconsistent.
 TEST(ConflictProof, OverlappingAngleRangesNearAnAxisAreNotProven) {
   Rng rng(7);
-  int tried = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (double sign : {-1.0, 1.0})
       for (double off : {0.0, 1e-6, 3e-6, 1e-5}) {
@@ -256,9 +255,7 @@ TEST(ConflictProof, OverlappingAngleRangesNearAnAxisAreNotProven) {
         SCOPED_TRACE("axis " + std::to_string(axis) + " sign " + std::to_string(sign) + " off " +
                      std::to_string(off));
         EXPECT_FALSE(provenInconsistent(p, 6000));
-        ++tried;
       }
-  EXPECT_EQ(tried, 24);
 }
 
 }  // namespace
