@@ -14,6 +14,15 @@
 
 namespace relpos::complete::detail {
 
+// A normal within this of the earlier ones' span is in it (dependent everywhere, not by a
+// coincidence of the pose): far below any tolerance, far above the rounding of normalised data.
+constexpr double kInSpan = 1e-13;
+
+// A plane offset or a cosine: linear in the mobile point x or direction R u.
+inline bool linear(const Condition& c) {
+  return c.kind == ConditionKind::kPointPlane || c.kind == ConditionKind::kCosine;
+}
+
 struct ImpliedEquation {
   Condition condition;
   double mismatch = 0.0;  // |b' − b|: the value the earlier equations give it, against its own
@@ -31,21 +40,5 @@ void dropImpliedEquations(ConditionSystem* system, double length_tolerance, doub
 // them holds those only to what it proved): what a chart reaching that far must keep within the
 // tolerance.
 double impliedViolation(const ImpliedEquation& e, double reach, double earlier);
-
-// Where the equations are dependent at a pose (R0, t0): the ones independent there (greedily,
-// in order) are kept; each other one must be a constant on any connected piece of the kept
-// ones' set through the pose, by what the kept ones hold constant there — a direction pinned by
-// two angle rows (finitely many directions meet them) or every direction when the angles pin
-// the rotation (rank 3 in its coordinates), a mobile point's coordinates along its plane rows'
-// normals (every point's along every normal with the rotation pinned) — and what it reads of
-// them: an angle a pinned direction, a plane offset a held normal, a distance to a point a
-// point held whole, to a fixed line the point held across it, a fixed point's distance to a
-// mobile line (plane) its pinned direction and the point held across (along) it, a skew
-// distance of a mobile line its pinned direction and the point held across it. Returns the
-// system without those (`dropped`, in the system's frame); false when some dependent equation
-// is not such a constant, or none is dependent. The caller proves the dropped ones hold at the
-// exact pose of the kept ones (chart.hpp, holdAtExactBase): then on the whole piece.
-bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
-                     ConditionSystem* reduced, std::vector<Condition>* dropped);
 
 }  // namespace relpos::complete::detail

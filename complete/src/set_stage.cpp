@@ -6,6 +6,7 @@
 
 #include "chart_manifold.hpp"
 #include "conflict_search.hpp"
+#include "dependent_equations.hpp"
 #include "implied_equations.hpp"
 #include "point_search.hpp"
 #include "relpos/complete/stage.hpp"

@@ -169,7 +169,7 @@ TEST(ChartStage, ThreeFaceContactsGiveTheSlideOfTheirRange) {
 // point at its distance from the mobile line (DOF 2); a face on a face and a fixed point at its
 // offset from the mobile face (DOF 3). The second constraint's equations are dependent on the
 // first's everywhere: charts of the first's set, every pose meeting both, the DOF measured. (Also
-// a line on a line and its skew distance to another fixed line: DOF 2.)
+// a line on a line and its skew distance to another fixed line: DOF 2; and those below.)
 struct Repeated {
   const char* label;
   int dof;
@@ -217,11 +217,94 @@ void faceOnFaceAndAPointsOffset(Problem& p, Rng& rng, const Isometry3d& X) {
   p.addConstraint("distance", "mark", "base", (q - a).dot(w));
 }
 
+// A point on a point and four points at their distances from fixed points: seven equations,
+// their set isolated poses (DOF 0).
+void pointOnPointAndFourDistances(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5);
+  p.addFixedFeature("at", Feature::makePoint(X * m));
+  p.addMobileFeature("tip", Feature::makePoint(m));
+  p.addConstraint("coincident", "at", "tip");
+  for (int k = 0; k < 4; ++k) {
+    const std::string i = std::to_string(k);
+    const Vector3d a = rng.point(0.5), q = rng.point();
+    p.addFixedFeature("post" + i, Feature::makePoint(q));
+    p.addMobileFeature("mark" + i, Feature::makePoint(a));
+    p.addConstraint("distance", "post" + i, "mark" + i, (X * a - q).norm());
+  }
+}
+
+// A line parallel to a fixed one at its distance and through a fixed point there (DOF 2: the
+// slide along it, the turn about it): the point places the line, the distance repeats it.
+void parallelLineThroughAPoint(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), u = rng.unit(), b = rng.point();
+  const Vector3d a = X * m, w = X.linear() * u;
+  p.addFixedFeature("rail", Feature::makeLine(b, w));
+  p.addFixedFeature("post", Feature::makePoint(a + rng.uniform(-1.0, 1.0) * w));
+  p.addMobileFeature("axis", Feature::makeLine(m, u));
+  p.addConstraint("distance", "rail", "axis", ((a - b) - (a - b).dot(w) * w).norm());
+  p.addConstraint("coincident", "post", "axis");
+}
+
+// A face on a face and a pin on a groove in the table (DOF 2: the slide along the groove, the
+// turn about the pin): the pin's height is the face's, said twice.
+void faceOnFaceAndAPinInAGroove(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), n = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * n;
+  Vector3d pin = rng.point(0.5);
+  pin -= (pin - m).dot(n) * n;  // in the mobile face
+  const Vector3d along = w.cross(rng.unit()).normalized();
+  p.addFixedFeature("table", Feature::makePlane(a, -w));
+  p.addFixedFeature("groove", Feature::makeLine(X * pin + rng.uniform(-1.0, 1.0) * along, along));
+  p.addMobileFeature("base", Feature::makePlane(m, n));
+  p.addMobileFeature("pin", Feature::makePoint(pin));
+  p.addConstraint("coincident", "table", "base", 0.0, Orientation::kOpposed);
+  p.addConstraint("coincident", "groove", "pin");
+}
+
+// A face on a face and a roller lying along it, touching a beam that crosses above the table
+// (DOF 3: the slide and turn on the table): the beam's distance to the roller's axis is their
+// heights' difference wherever they are not parallel.
+void faceOnFaceAndARollerUnderABeam(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), n = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * n;
+  const Vector3d c = rng.point(0.5), axis = n.cross(rng.unit()).normalized();
+  const double r = rng.uniform(0.1, 0.5);
+  const double beam_height = (X * c - a).dot(w) + r;
+  const Vector3d e = w.cross(rng.unit()).normalized();
+  p.addFixedFeature("table", Feature::makePlane(a, -w));
+  p.addFixedFeature("beam", Feature::makeLine(a + beam_height * w + w.cross(e), e));
+  p.addMobileFeature("base", Feature::makePlane(m, n));
+  p.addMobileFeature("roller", Feature::makeCylinder(c, axis, r));
+  p.addConstraint("coincident", "table", "base", 0.0, Orientation::kOpposed);
+  p.addConstraint("tangent", "beam", "roller");
+}
+
+// A line parallel to a fixed one at its distance, in a fixed plane along it, and at its distance
+// from a fixed point (DOF 2): the plane and the first distance place the line across its
+// direction, the point's distance repeats them.
+void parallelLineInAPlaneAndAPointsDistance(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), u = rng.unit(), b = rng.point(), q = rng.point();
+  const Vector3d a = X * m, w = X.linear() * u;
+  const Vector3d normal = w.cross(rng.unit()).normalized();
+  p.addFixedFeature("rail", Feature::makeLine(b, w));
+  p.addFixedFeature("floor", Feature::makePlane(a, normal));
+  p.addFixedFeature("post", Feature::makePoint(q));
+  p.addMobileFeature("axis", Feature::makeLine(m, u));
+  p.addConstraint("distance", "rail", "axis", ((a - b) - (a - b).dot(w) * w).norm());
+  p.addConstraint("distance", "floor", "axis", 0.0);
+  p.addConstraint("distance", "post", "axis", ((q - a) - (q - a).dot(w) * w).norm());
+}
+
 TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
   const Repeated cases[] = {{"point on point", 3, pointOnPointAndItsDistance},
                             {"line on line", 2, lineOnLineAndAPointsDistance},
                             {"line on line, skew", 2, lineOnLineAndASkewDistance},
-                            {"face on face", 3, faceOnFaceAndAPointsOffset}};
+                            {"face on face", 3, faceOnFaceAndAPointsOffset},
+                            {"point on point, four distances", 0, pointOnPointAndFourDistances},
+                            {"parallel line through a point", 2, parallelLineThroughAPoint},
+                            {"face on face, pin in a groove", 2, faceOnFaceAndAPinInAGroove},
+                            {"face on face, roller under a beam", 3, faceOnFaceAndARollerUnderABeam},
+                            {"parallel line in a plane", 2, parallelLineInAPlaneAndAPointsDistance}};
   Rng rng(2020);
   std::mt19937_64 sampler(20);
   for (const Repeated& r : cases)

@@ -1,0 +1,376 @@
+#include "dependent_equations.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "implied_equations.hpp"
+
+namespace relpos::complete::detail {
+namespace {
+
+// A cosine this small is a right angle's (cos(π/2) rounds to 6e-17): its row holds the direction
+// across its normal to within this times the reach, far below any tolerance.
+constexpr double kZeroCosine = 1e-15;
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+// Greedy rank selection: whether v adds a direction to `basis` (orthonormal, extended by it
+// when it does): its part off their span above `gap` of its length.
+bool extendsSpan(const Vector3d& v, double gap, std::vector<Vector3d>* basis) {
+  Vector3d r = v;
+  for (const Vector3d& e : *basis) r -= r.dot(e) * e;
+  if (!(r.norm() > gap * v.norm())) return false;
+  basis->push_back(r.normalized());
+  return true;
+}
+
+// The rank gap of the charts (chart.cpp): an angle equation independent of the others there.
+constexpr double kRankGap = 1e-7;
+
+// A vector within this of a span (relative to its length) is in it: the structure of the
+// decompositions (the same vectors, their cross products), not a coincidence of the pose.
+bool inSpan(const Vector3d& v, const std::vector<Vector3d>& basis) {
+  Vector3d r = v;
+  for (const Vector3d& e : basis) r -= r.dot(e) * e;
+  return r.norm() <= kInSpan * v.norm();
+}
+
+// What the kept equations hold constant on any connected piece of their set through the base.
+struct Pinned {
+  bool rotation = false;                 // the angles' rank is 3 in the rotation's coordinates
+  std::vector<Vector3d> slides;          // with the rotation pinned: every plane row's normal
+  std::vector<std::array<double, 3>> u;  // per mobile direction: its (orthonormal) rows...
+  std::vector<std::vector<Vector3d>> rows, zero_rows;  // ...and those of value 0
+  std::vector<std::array<double, 3>> p;                // per mobile point: its plane rows' normals
+  std::vector<std::vector<Vector3d>> normals;
+
+  // The index of direction k (or −k) among `keys`, of point k with `point`; −1: none.
+  static int find(const std::vector<std::array<double, 3>>& keys, const std::array<double, 3>& k,
+                  bool point = false) {
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] == k || (!point && vec(keys[i]) == -vec(k))) return static_cast<int>(i);
+    return -1;
+  }
+  // A direction is pinned by two independent angle rows (then finitely many directions meet
+  // them) or by a pinned rotation.
+  bool direction(const std::array<double, 3>& d) const {
+    const int i = find(u, d);
+    return rotation || (i >= 0 && rows[static_cast<std::size_t>(i)].size() >= 2);
+  }
+  // The world direction (up to sign) of mobile direction d when two right angles pin it, to
+  // the rounding of the fixed data (their normals' cross product); false otherwise.
+  bool world(const std::array<double, 3>& d, Vector3d* w) const {
+    const int i = find(u, d);
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
+    *w = z[0].cross(z[1]).normalized();
+    return true;
+  }
+  // Point q's coordinate along normal n is held (and every point's, with the rotation pinned).
+  void hold(const std::array<double, 3>& q, const Vector3d& n) {
+    extendsSpan(n, kInSpan, &slides);
+    int k = find(p, q, true);
+    if (k < 0) {
+      k = static_cast<int>(p.size());
+      p.push_back(q), normals.emplace_back();
+    }
+    extendsSpan(n, kInSpan, &normals[static_cast<std::size_t>(k)]);
+  }
+  // The span of the point's coordinates held constant: its plane rows' normals (all of them
+  // with the rotation pinned: x = R p + t).
+  // A point q differing from p along a pinned direction moves with it (x_q − x_p = R (q − p)
+  // is pinned): its coordinates along p's normals are held too (a plane offset folds its value
+  // into the plane's point, pose_conditions.cpp: the same plane, another point on its normal).
+  bool movesWith(const std::array<double, 3>& q, const std::array<double, 3>& r) const {
+    if (q == r) return true;
+    const Vector3d step = vec(q) - vec(r);
+    for (std::size_t k = 0; k < u.size(); ++k)
+      if (rows[k].size() >= 2 &&
+          step.cross(vec(u[k])).norm() <= kInSpan * step.norm() * vec(u[k]).norm())
+        return true;
+    return false;
+  }
+  std::vector<Vector3d> held(const std::array<double, 3>& q) const {
+    if (rotation) return slides;
+    std::vector<Vector3d> span;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (movesWith(q, p[i]))
+        for (const Vector3d& n : normals[i]) extendsSpan(n, kInSpan, &span);
+    // Along the world direction w of a pinned direction v, any two points differ by a constant
+    // ((R(q − p))·(R v) = (q − p)·v): w held for one point is held for every point.
+    for (const std::array<double, 3>& v : u) {
+      Vector3d w;
+      if (!world(v, &w)) continue;
+      for (const std::vector<Vector3d>& n : normals)
+        if (inSpan(w, n)) {
+          extendsSpan(w, kInSpan, &span);
+          break;
+        }
+    }
+    return span;
+  }
+  // A pinned direction perpendicular to the held span of point q (exactly: its value-0 angle
+  // rows span the same plane), or along it (their cross product in it).
+  bool across(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
+    const int i = find(u, d);
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    const std::vector<Vector3d> h = held(q);
+    for (const Vector3d& e : h)
+      if (!inSpan(e, zero_rows[static_cast<std::size_t>(i)])) return false;
+    return h.size() == 2;
+  }
+  bool along(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
+    const int i = find(u, d);
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
+    return inSpan(z[0].cross(z[1]), held(q));
+  }
+};
+
+// A skew condition whose mobile line turns in a plane across a pinned direction's world w and
+// whose fixed line is across w too: n = R u × d is along w, h = ±|n|·(x − q)·w, and with x held
+// along w the lines' distance |h|/|n| is a constant — where they are not parallel (n ≠ 0:
+// there h and |n| vanish together, whatever the distance).
+bool skewAlongPinned(const Condition& c, const Pinned& pinned) {
+  for (const std::array<double, 3>& v : pinned.u) {
+    Vector3d w;
+    if (!pinned.world(v, &w) || std::abs(vec(c.u).dot(vec(v))) > kInSpan * vec(c.u).norm() ||
+        std::abs(vec(c.d).dot(w)) > kInSpan * vec(c.d).norm() || !inSpan(w, pinned.held(c.p)))
+      continue;
+    return true;
+  }
+  return false;
+}
+
+// Whether equation c is a constant on the piece where `pinned` holds.
+// `guard`: set when that holds only where the lines c reads are not parallel (skewAlongPinned).
+bool constantWhere(const Condition& c, const Pinned& pinned, bool* guard) {
+  *guard = false;
+  const std::size_t held = pinned.held(c.p).size();
+  switch (c.kind) {
+    case ConditionKind::kCosine:
+      return pinned.direction(c.u);
+    case ConditionKind::kPointPlane:
+      return inSpan(vec(c.d), pinned.held(c.p));
+    case ConditionKind::kPointPoint:
+      return held == 3;
+    case ConditionKind::kPointLine: {  // reads x across the fixed line d (to 1e-13 of it)
+      if (held == 3) return true;
+      const std::vector<Vector3d> h = pinned.held(c.p);
+      return h.size() == 2 && std::abs(h[0].dot(vec(c.d))) <= kInSpan &&
+             std::abs(h[1].dot(vec(c.d))) <= kInSpan;
+    }
+    case ConditionKind::kLinePoint:  // reads w and x across w
+      return pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p));
+    case ConditionKind::kPlanePoint:  // reads w and x along w
+      return pinned.direction(c.u) && (held == 3 || pinned.along(c.u, c.p));
+    case ConditionKind::kSkew:
+    case ConditionKind::kSkewSquared:  // reads w and x along w × d, across w
+      if (pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p))) return true;
+      *guard = skewAlongPinned(c, pinned);
+      return *guard;
+    default:
+      return false;
+  }
+}
+
+// Whether condition c reads its mobile point only across w, the world direction of mobile
+// direction v (pinned).
+bool readsAcross(const Condition& c, const std::array<double, 3>& v, const Vector3d& w) {
+  const Vector3d d = vec(c.d);
+  const bool along_v = vec(c.u).cross(vec(v)).norm() <= kInSpan * vec(c.u).norm() * vec(v).norm();
+  switch (c.kind) {
+    case ConditionKind::kPointPlane:
+      return std::abs(d.dot(w)) <= kInSpan * d.norm();
+    case ConditionKind::kPointLine:
+      return d.cross(w).norm() <= kInSpan * d.norm();
+    case ConditionKind::kLinePoint:
+    case ConditionKind::kSkew:
+    case ConditionKind::kSkewSquared:
+      return along_v && vec(c.u).norm() > 0.0;
+    default:
+      return false;
+  }
+}
+
+// What the equations kept (keep[i]) pin on their set through the base; `rows`: every
+// equation's gradient there.
+Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
+                const std::vector<Vector6d>& rows) {
+  Pinned pinned;
+  std::vector<Vector3d> turns;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    const Condition& c = system.equations[i];
+    if (!keep[i]) continue;
+    if (c.kind == ConditionKind::kCosine) {
+      extendsSpan(rows[i].head<3>(), kRankGap, &turns);
+      int k = Pinned::find(pinned.u, c.u);
+      if (k < 0) {
+        k = static_cast<int>(pinned.u.size());
+        pinned.u.push_back(c.u), pinned.rows.emplace_back(), pinned.zero_rows.emplace_back();
+      }
+      extendsSpan(vec(c.d), kInSpan, &pinned.rows[static_cast<std::size_t>(k)]);
+      if (std::abs(c.lo) <= kZeroCosine)
+        extendsSpan(vec(c.d), kInSpan, &pinned.zero_rows[static_cast<std::size_t>(k)]);
+    } else if (c.kind == ConditionKind::kPointPlane) {
+      pinned.hold(c.p, vec(c.d));
+    }
+  }
+  pinned.rotation = turns.size() >= 3;
+  // A fixed point's offset from a mobile plane whose normal two right angles pin (to world w):
+  // the plane's point held along w. Two such offsets of 0 from planes through one mobile line
+  // whose direction is so pinned (the fixed point on the line): the line's point held across it.
+  std::vector<std::size_t> offsets;
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    if (keep[i] && system.equations[i].kind == ConditionKind::kPlanePoint) offsets.push_back(i);
+  for (std::size_t i : offsets) {
+    const Condition& c = system.equations[i];
+    Vector3d w;
+    if (pinned.world(c.u, &w)) pinned.hold(c.p, w);
+  }
+  for (std::size_t a = 0; a < offsets.size(); ++a)
+    for (std::size_t b = a + 1; b < offsets.size(); ++b) {
+      const Condition& e = system.equations[offsets[a]];
+      const Condition& f = system.equations[offsets[b]];
+      if (e.p != f.p || e.lo != 0.0 || f.lo != 0.0) continue;
+      const Vector3d axis = vec(e.u).cross(vec(f.u));
+      for (const std::array<double, 3>& v : pinned.u) {
+        Vector3d w;
+        if (!pinned.world(v, &w) || !inSpan(axis, {vec(v).normalized()}) || axis.norm() < 0.5)
+          continue;
+        const Vector3d across = w.unitOrthogonal();
+        pinned.hold(e.p, across);
+        pinned.hold(e.p, w.cross(across));
+      }
+    }
+  // Two independent equations that read only where a point is across a pinned direction's world
+  // w (an offset along a normal across w, a distance to a fixed line along w, a distance or skew
+  // distance of a mobile line along w): that place is isolated, so held — the equations stay
+  // independent over a chart (its proof), and so it is a constant on the chart's piece.
+  for (const std::array<double, 3>& v : pinned.u) {
+    Vector3d w;
+    if (!pinned.world(v, &w)) continue;
+    for (std::size_t i = 0; i < keep.size(); ++i) {
+      if (!keep[i]) continue;
+      int across = 0;
+      for (std::size_t j = 0; j < keep.size(); ++j)
+        across += keep[j] && pinned.movesWith(system.equations[j].p, system.equations[i].p) &&
+                  readsAcross(system.equations[j], v, w);
+      if (across < 2) continue;
+      const Vector3d e = w.unitOrthogonal();
+      pinned.hold(system.equations[i].p, e);
+      pinned.hold(system.equations[i].p, w.cross(e));
+    }
+  }
+  return pinned;
+}
+
+// Whether the equations not kept are constants where the kept ones hold (all of them when six
+// are kept: their set is, near the base, the base alone — an overdetermined system's isolated
+// pose).
+// `guarded`: the conditions so dropped that hold only where their lines are not parallel.
+bool droppedConstant(const ConditionSystem& system, const std::vector<bool>& keep,
+                     const std::vector<Vector6d>& rows, std::vector<std::size_t>* guarded) {
+  guarded->clear();
+  if (std::count(keep.begin(), keep.end(), true) == 6) return true;
+  const Pinned pinned = pinnedBy(system, keep, rows);
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    bool guard = false;
+    if (keep[i]) continue;
+    if (!constantWhere(system.equations[i], pinned, &guard)) return false;
+    if (guard) guarded->push_back(i);
+  }
+  return true;
+}
+
+// Whether the rows marked in `keep` are independent (each one's part off the earlier ones'
+// span above the rank gap).
+bool independent(const std::vector<Vector6d>& rows, const std::vector<bool>& keep) {
+  std::vector<Vector6d> basis;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!keep[i]) continue;
+    Vector6d r = rows[i];
+    for (const Vector6d& e : basis) r -= r.dot(e) * e;
+    if (!(r.norm() > kRankGap * std::max(1.0, rows[i].norm()))) return false;
+    basis.push_back(r.normalized());
+  }
+  return true;
+}
+
+// The next choice of `count` of n indices to drop after `drop` (lexicographic); false after
+// the last.
+bool nextChoice(std::vector<std::size_t>* drop, std::size_t n) {
+  const std::size_t k = drop->size();
+  for (std::size_t i = k; i-- > 0;)
+    if ((*drop)[i] < n - k + i) {
+      ++(*drop)[i];
+      for (std::size_t j = i + 1; j < k; ++j) (*drop)[j] = (*drop)[j - 1] + 1;
+      return true;
+    }
+  return false;
+}
+
+// The most choices of which dependent equations to drop tried (C(8, 4) = 70, C(10, 5) = 252).
+constexpr int kMostChoices = 256;
+
+}  // namespace
+
+bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
+                     ConditionSystem* reduced, std::vector<Condition>* dropped) {
+  dropped->clear();
+  std::array<Dual<double>, 6> y;
+  for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
+  const LocalPose<Dual<double>> X(y);
+  const std::size_t n = system.equations.size();
+  std::vector<Vector6d> rows(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Dual<double> g = evaluate(inBaseFrame(system.equations[i], R0, t0), X);
+    for (int j = 0; j < 6; ++j) rows[i][j] = g.g[j];
+  }
+  // the equations independent at the base (greedily, in their canonical order): the linear
+  // ones first — what pins directions and points — then the others, which read them
+  std::vector<Vector6d> basis;
+  std::vector<bool> keep(n, false);
+  for (const bool linear_pass : {true, false})
+    for (std::size_t i = 0; i < n; ++i) {
+      if (linear(system.equations[i]) != linear_pass) continue;
+      Vector6d r = rows[i];
+      for (const auto& e : basis) r -= r.dot(e) * e;
+      keep[i] = r.norm() > kRankGap * std::max(1.0, rows[i].norm());
+      if (keep[i]) basis.push_back(r.normalized());
+    }
+  const std::size_t rank = basis.size();
+  if (rank == n) return false;
+  std::vector<std::size_t> guarded;
+  bool found = droppedConstant(system, keep, rows, &guarded);
+  // Otherwise another choice of the dependent ones to drop: which one a dependence names is
+  // the greedy order's accident (a point's distance dropped where the offsets that hold it
+  // were kept, or the reverse).
+  std::vector<std::size_t> drop(n - rank);
+  for (std::size_t i = 0; i < drop.size(); ++i) drop[i] = i;
+  for (int tries = 0; !found && tries < kMostChoices; ++tries) {
+    std::fill(keep.begin(), keep.end(), true);
+    for (std::size_t i : drop) keep[i] = false;
+    found = independent(rows, keep) && droppedConstant(system, keep, rows, &guarded);
+    if (!found && !nextChoice(&drop, n)) break;
+  }
+  if (!found) return false;
+  *reduced = system;
+  reduced->equations.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    (keep[i] ? reduced->equations : *dropped).push_back(system.equations[i]);
+  // The guard of a skew distance dropped as constant only where its lines are not parallel:
+  // the cosine of their angle kept within halfway from its value at the base to ±1.
+  for (std::size_t i : guarded) {
+    Condition g = system.equations[i];
+    g.kind = ConditionKind::kCosine;
+    const double at_base = std::abs((R0 * vec(g.u)).dot(vec(g.d)));
+    g.hi = 0.5 * (1.0 + at_base);
+    g.lo = -g.hi;
+    if (!(at_base < 1.0)) return false;
+    reduced->inequalities.push_back(g);
+  }
+  return true;
+}
+
+}  // namespace relpos::complete::detail
