@@ -196,7 +196,7 @@ bool certifyChart(const Chart& c, const std::array<double, 6>& radius, double* s
 }
 
 bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
-                     const std::vector<double>& tolerance) {
+                     const std::vector<double>& tolerance, std::vector<double>* proven) {
   double sigma = 0.0;
   if (!certifyChart(c, std::array<double, 6>{}, &sigma)) return false;
   std::vector<Condition> local;
@@ -212,6 +212,10 @@ bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
     const double lo = local[i].equation() ? 0.0 : local[i].lo;
     const double hi = local[i].equation() ? 0.0 : local[i].hi;
     if (!inside(value[i], lo - tolerance[i], hi + tolerance[i])) return false;
+  }
+  if (proven) {
+    proven->clear();
+    for (const FI& v : value) proven->push_back(std::max(-v.lower(), v.upper()));
   }
   return true;
 }

@@ -45,8 +45,9 @@ bool growChart(Chart& chart, double start, double limit);
 // condition) at the exact pose of the chart's equations at θ = 0: Krawczyk's test proves that
 // pose within a slice about the base as thin as the base's residual allows, and the conditions'
 // enclosures over that slice are within their ranges so widened.
+// `proven` (when set): per equation of `extra`, the bound on |g − value| so proven there.
 bool holdAtExactBase(const Chart& chart, const std::vector<Condition>& extra,
-                     const std::vector<double>& tolerance);
+                     const std::vector<double>& tolerance, std::vector<double>* proven = nullptr);
 
 // The pose at θ (normalised): Newton's method on the slice.
 void chartPose(const Chart& chart, const std::array<double, 6>& theta, Matrix3d* R, Vector3d* t);

@@ -128,18 +128,22 @@ struct Pinned {
 };
 
 // A skew condition whose mobile line turns in a plane across a pinned direction's world w and
-// whose fixed line is across w too: n = R u × d is along w, h = ±|n|·(x − q)·w, and with x held
-// along w the lines' distance |h|/|n| is a constant — where they are not parallel (n ≠ 0:
-// there h and |n| vanish together, whatever the distance).
-bool skewAlongPinned(const Condition& c, const Pinned& pinned) {
-  for (const std::array<double, 3>& v : pinned.u) {
-    Vector3d w;
-    if (!pinned.world(v, &w) || std::abs(vec(c.u).dot(vec(v))) > kInSpan * vec(c.u).norm() ||
-        std::abs(vec(c.d).dot(w)) > kInSpan * vec(c.d).norm() || !inSpan(w, pinned.held(c.p)))
-      continue;
-    return true;
-  }
+// whose fixed line is across w too (`w`: that w): n = R u × d is along w, h = ±|n|·(x − q)·w,
+// and where the lines are not parallel (n ≠ 0) it reads only the height (x − q)·w — their
+// distance |h|/|n|. (Where they are parallel h and |n| vanish together, whatever the distance.)
+bool skewAcross(const Condition& c, const Pinned& pinned, Vector3d* w) {
+  if (c.kind != ConditionKind::kSkew && c.kind != ConditionKind::kSkewSquared) return false;
+  for (const std::array<double, 3>& v : pinned.u)
+    if (pinned.world(v, w) && std::abs(vec(c.u).dot(vec(v))) <= kInSpan * vec(c.u).norm() &&
+        std::abs(vec(c.d).dot(*w)) <= kInSpan * vec(c.d).norm())
+      return true;
   return false;
+}
+
+// Such a condition with its point held along w: a constant where the lines are not parallel.
+bool skewAlongPinned(const Condition& c, const Pinned& pinned) {
+  Vector3d w;
+  return skewAcross(c, pinned, &w) && inSpan(w, pinned.held(c.p));
 }
 
 // Whether equation c is a constant on the piece where `pinned` holds.
@@ -243,6 +247,12 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
         pinned.hold(e.p, w.cross(across));
       }
     }
+  // Such a skew condition kept: the chart's proof keeps its gradient, and so n, nonzero over its
+  // piece, where it then holds the height (x − q)·w at one of the finitely many values it allows.
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    Vector3d w;
+    if (keep[i] && skewAcross(system.equations[i], pinned, &w)) pinned.hold(system.equations[i].p, w);
+  }
   // Two independent equations that read only where a point is across a pinned direction's world
   // w (an offset along a normal across w, a distance to a fixed line along w, a distance or skew
   // distance of a mobile line along w): that place is isolated, so held — the equations stay

@@ -49,7 +49,7 @@ bool covered(const std::vector<std::shared_ptr<const ChartData>>& charts, const 
   return false;
 }
 
-// How far the equations a chart dropped as constants may be off on it, per kind (0: none
+// How far the plane offsets and cosines a chart dropped as constants may be off on it (0: none
 // dropped): what an implied equation that follows from them may be off by besides its own.
 struct DroppedSlack {
   double cosine = 0.0, plane = 0.0;
@@ -81,10 +81,18 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
                     : 2.0 * std::sqrt(std::max(c.k, 0.0)) * n * n * allowed;
     }
     within.push_back(allowed);
-    double& worst = c.kind == detail::ConditionKind::kCosine ? earlier->cosine : earlier->plane;
-    worst = std::max(worst, within.back());
   }
-  return detail::holdAtExactBase(*chart, dropped, within);
+  std::vector<double> proven;
+  if (!detail::holdAtExactBase(*chart, dropped, within, &proven)) return false;
+  // A dropped plane offset or cosine (what an implied equation may follow from) is off on the
+  // whole piece by what it is off at the exact base: a constant there.
+  for (std::size_t i = 0; i < dropped.size(); ++i) {
+    if (dropped[i].kind == detail::ConditionKind::kCosine)
+      earlier->cosine = std::max(earlier->cosine, proven[i]);
+    else if (dropped[i].kind == detail::ConditionKind::kPointPlane)
+      earlier->plane = std::max(earlier->plane, proven[i]);
+  }
+  return true;
 }
 
 // Whether the equations dropped as implied hold within the tolerance over the whole chart: its

@@ -295,6 +295,57 @@ void parallelLineInAPlaneAndAPointsDistance(Problem& p, Rng& rng, const Isometry
   p.addConstraint("distance", "post", "axis", ((q - a) - (q - a).dot(w) * w).norm());
 }
 
+// A face on a face and a fixed edge lying in the mobile face (DOF 3): the edge's direction is
+// implied by the face's normal, its point by the face's offset.
+void faceOnFaceAndAnEdgeInIt(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), n = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * n;
+  const Vector3d along = w.cross(rng.unit()).normalized();
+  const Vector3d in_face = w.cross(along) * rng.uniform(-1.0, 1.0);
+  p.addFixedFeature("table", Feature::makePlane(a, -w));
+  p.addFixedFeature("edge", Feature::makeLine(a + in_face, along));
+  p.addMobileFeature("base", Feature::makePlane(m, n));
+  p.addConstraint("coincident", "table", "base", 0.0, Orientation::kOpposed);
+  p.addConstraint("coincident", "edge", "base");
+}
+
+// The same with a fixed point on a mobile cylinder and a mobile line parallel to a fixed one at
+// its distance (DOF 0): the edge's direction is an equation implied by the face's normal, held
+// to what the chart proves of the normal's rows (those it dropped as constants included).
+void faceOnFaceEdgeCylinderAndParallel(Problem& p, Rng& rng, const Isometry3d& X) {
+  faceOnFaceAndAnEdgeInIt(p, rng, X);
+  const Vector3d c = rng.point(0.5), axis = rng.unit(), u = rng.unit(), m = rng.point(0.5);
+  const double r = rng.uniform(0.2, 1.0);
+  const Vector3d w = X.linear() * axis, across = w.cross(rng.unit()).normalized();
+  p.addFixedFeature("stud", Feature::makePoint(X * c + r * across));
+  p.addMobileFeature("sleeve", Feature::makeCylinder(c, axis, r));
+  p.addConstraint("coincident", "stud", "sleeve");
+  const Vector3d b = rng.point(), e = X.linear() * u;
+  p.addFixedFeature("rail", Feature::makeLine(b, e));
+  p.addMobileFeature("axis", Feature::makeLine(m, u));
+  p.addConstraint("distance", "rail", "axis", ((X * m - b) - (X * m - b).dot(e) * e).norm());
+}
+
+// A face parallel to the table and two rollers lying along it under two beams across above
+// (DOF 3): the first tangency sets the height, the second says it again.
+void twoRollersUnderTwoBeams(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), n = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * n;
+  p.addFixedFeature("table", Feature::makePlane(a - 0.5 * w, -w));
+  p.addMobileFeature("base", Feature::makePlane(m, n));
+  p.addConstraint("parallel", "table", "base", 0.0, Orientation::kOpposed);
+  for (int k = 0; k < 2; ++k) {
+    const std::string i = std::to_string(k);
+    const Vector3d c = rng.point(0.5), axis = n.cross(rng.unit()).normalized();
+    const double r = rng.uniform(0.1, 0.5);
+    const Vector3d e = w.cross(rng.unit()).normalized();
+    const double height = (X * c - a).dot(w) + r;
+    p.addFixedFeature("beam" + i, Feature::makeLine(a + height * w + w.cross(e), e));
+    p.addMobileFeature("roller" + i, Feature::makeCylinder(c, axis, r));
+    p.addConstraint("tangent", "beam" + i, "roller" + i);
+  }
+}
+
 TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
   const Repeated cases[] = {{"point on point", 3, pointOnPointAndItsDistance},
                             {"line on line", 2, lineOnLineAndAPointsDistance},
@@ -304,7 +355,11 @@ TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
                             {"parallel line through a point", 2, parallelLineThroughAPoint},
                             {"face on face, pin in a groove", 2, faceOnFaceAndAPinInAGroove},
                             {"face on face, roller under a beam", 3, faceOnFaceAndARollerUnderABeam},
-                            {"parallel line in a plane", 2, parallelLineInAPlaneAndAPointsDistance}};
+                            {"parallel line in a plane", 2, parallelLineInAPlaneAndAPointsDistance},
+                            {"face on face, an edge in it", 3, faceOnFaceAndAnEdgeInIt},
+                            {"two rollers under two beams", 3, twoRollersUnderTwoBeams},
+                            {"face on face, edge, sleeve, parallel", 0,
+                             faceOnFaceEdgeCylinderAndParallel}};
   Rng rng(2020);
   std::mt19937_64 sampler(20);
   for (const Repeated& r : cases)
