@@ -170,19 +170,25 @@ bool certifyChart(const Chart& c, const std::array<double, 6>& radius, double* s
           js[r][l] = sum;
         }
       proven = true;
-      double worst = 0.0;
+      double needed = 0.0;
       for (int i = 0; i < c.m; ++i) {
         FI k = -ye[static_cast<std::size_t>(i)];
+        double rho = 0.0;  // the row's contraction: Σ_l |I − Y·J_s|(i, l)
         for (int l = 0; l < c.m; ++l) {
           FI yjs(0.0);  // (Y·J_s)(i, l)
           for (int r = 0; r < c.m; ++r) yjs += js[r][l] * c.Y(i, r);
           const FI mil = FI(i == l ? 1.0 : 0.0) - yjs;
+          rho += mag(mil);
           k += mil * FI(-sigma, sigma);
         }
-        worst = std::max(worst, mag(k));
         if (!(-sigma < k.lower() && k.upper() < sigma)) proven = false;
+        // No contraction on this slice: none on a wider one (J_s only spreads), so no slice
+        // proves this box — the growth's failed boxes end here, not after eight slices.
+        if (!(rho < 1.0)) return false;
+        // the slice the row would need if the contraction stayed: |Y·E| / (1 − ρ)
+        needed = std::max(needed, mag(ye[static_cast<std::size_t>(i)]) / (1.0 - rho));
       }
-      if (!proven) sigma = std::max(2.0 * worst, 1.5 * sigma);
+      if (!proven) sigma = std::max(1.25 * needed, 1.5 * sigma);
     }
     if (!proven) return false;
   }
@@ -234,19 +240,28 @@ bool growChart(Chart& c, double start, double limit) {
     r = box, sigma = s;
     return true;
   };
-  // every tangent coordinate alike, then each alone (a slide may reach far, a turn not)
-  while (r[0] * 2.0 <= limit) {
+  // Every tangent coordinate alike, by eights while the proof holds, then twice halving the
+  // factor (in logarithm) between the last box proven and the first not: about six proofs
+  // where doubling took a dozen (each costs as much as the next). Then each coordinate alone,
+  // doubled while it holds (a slide may reach far, a turn not).
+  auto scaled = [&](double f) {
     std::array<double, 6> box = r;
-    for (int j = 0; j < c.d; ++j) box[j] *= 2.0;
-    if (!tryBox(box)) break;
+    for (int j = 0; j < c.d; ++j) box[j] *= f;
+    return box;
+  };
+  double factor = 8.0;
+  while (r[0] * factor <= limit && tryBox(scaled(factor))) {
+  }
+  for (int k = 0; k < 2; ++k) {
+    factor = std::sqrt(factor);
+    if (r[0] * factor <= limit) tryBox(scaled(factor));
   }
   for (int j = 0; j < c.d; ++j)
-    for (double f : {2.0, 1.5, 1.25})
-      while (r[j] * f <= limit) {
-        std::array<double, 6> box = r;
-        box[j] *= f;
-        if (!tryBox(box)) break;
-      }
+    while (r[j] * 2.0 <= limit) {
+      std::array<double, 6> box = r;
+      box[j] *= 2.0;
+      if (!tryBox(box)) break;
+    }
   c.radius = r;
   c.slice = sigma;
   return true;

@@ -29,11 +29,21 @@ constexpr double kLargestBox = 4.0;
 // Grows the chart from the first box, or from smaller ones when the base is that close to a
 // range's edge or to where the equations' Jacobian turns singular: a small chart is still a
 // certified piece of the set.
-bool grown(Chart& chart) {
+// `hint`: a box the charts of the same set before proved in every coordinate (0: none), tried
+// first — the growth from there costs a few proofs, not the dozen from the first box.
+bool grown(Chart& chart, double hint) {
+  if (hint > kFirstBox && detail::growChart(chart, hint, kLargestBox)) return true;
   double first = kFirstBox;
   for (int k = 0; k < 4; ++k, first *= 0.1)  // 1e-3 down to 1e-6
     if (detail::growChart(chart, first, kLargestBox)) return true;
   return false;
+}
+
+// The smallest half-width of a chart's box, over its tangent coordinates.
+double smallestRadius(const Chart& chart) {
+  double r = kLargestBox;
+  for (int j = 0; j < chart.d; ++j) r = std::min(r, chart.radius[j]);
+  return r;
 }
 
 // Whether pose (R, t) is already a pose of one of `charts`, inside its box.
@@ -181,15 +191,20 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
     slack.length = std::max(slack.length, 1e-3 * length_tol);
     slack.angle = std::max(slack.angle, 1e-3 * tol.angle);
     std::vector<std::shared_ptr<const ChartData>> charts;
+    const std::size_t quota = std::max<std::size_t>(
+        1, (static_cast<std::size_t>(std::max(options.max_charts, 0)) + systems.size() - 1) /
+               systems.size());
     // the same starts for every alternative, whatever the constraints' order
     for (auto [R, t] : startPoses(problem, s, options.set_starts)) {
-      if (static_cast<int>(branches.size()) >= options.max_charts) break;
+      if (charts.size() >= quota) break;
       if (!detail::findPoint(s, &R, &t, slack)) continue;
       ++points;
       if (covered(charts, R, t)) continue;
       auto data = std::make_shared<ChartData>();
       DroppedSlack earlier;
-      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) || !grown(data->chart) ||
+      const double hint = charts.empty() ? 0.0 : 0.5 * smallestRadius(charts.front()->chart);
+      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) ||
+          !grown(data->chart, hint) ||
           !impliedHold(data->chart, implied, earlier, length_tol, tol.angle))
         continue;
       data->frame = s.frame;

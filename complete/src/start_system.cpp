@@ -9,6 +9,7 @@
 // makes solveFiber say "not complete".
 #include "start_system.hpp"
 
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -177,25 +178,45 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
 }  // namespace detail
 
 const StartSystem* findStartSystem(const Family& f, bool compute) {
-  // One computation per signature for the process; the lock is held while computing so two
-  // threads asking for the same signature compute it once.
+  // One computation per signature for the process. The map's lock is not held while computing
+  // (a new signature's monodromy takes up to seconds): a thread asking for a signature being
+  // computed waits for that one only, the others go on (a batch's other lines). The cache keeps
+  // every start system for the process, so the pointers returned stay valid.
+  using Entry = std::shared_future<std::shared_ptr<const StartSystem>>;
   static std::mutex mutex;
-  static std::map<std::string, std::unique_ptr<StartSystem>> cache;
+  static std::map<std::string, Entry> cache;
   static std::set<std::string> not_stored;  // looked up without computing: none stored
-  std::lock_guard<std::mutex> lock(mutex);
   const std::string signature = f.signature();
-  auto it = cache.find(signature);
-  if (it != cache.end()) return it->second.get();
+  std::unique_lock<std::mutex> lock(mutex);
+  if (auto it = cache.find(signature); it != cache.end()) {
+    const Entry entry = it->second;
+    lock.unlock();
+    return entry.get().get();
+  }
   if (!compute && not_stored.count(signature)) return nullptr;
   // The stored one first (deterministic: always preferred for its signature); a stored file
   // that fails its check against f is ignored and the start system computed.
-  std::unique_ptr<StartSystem> s = detail::loadStoredStartSystem(f);
-  if (!s && !compute) {
+  std::promise<std::shared_ptr<const StartSystem>> promise;
+  if (std::unique_ptr<StartSystem> stored = detail::loadStoredStartSystem(f)) {
+    promise.set_value(std::move(stored));
+    return cache.emplace(signature, promise.get_future().share()).first->second.get().get();
+  }
+  if (!compute) {
     not_stored.insert(signature);
     return nullptr;
   }
-  if (!s) s = detail::computeStartSystem(f, detail::kDefaultMaxBezout);
-  return cache.emplace(signature, std::move(s)).first->second.get();
+  const Entry entry = promise.get_future().share();
+  cache.emplace(signature, entry);
+  lock.unlock();
+  try {
+    promise.set_value(detail::computeStartSystem(f, detail::kDefaultMaxBezout));
+  } catch (...) {
+    promise.set_exception(std::current_exception());  // to those waiting for it
+    lock.lock();
+    cache.erase(signature);  // a later call tries again
+    throw;
+  }
+  return entry.get().get();
 }
 
 const StartSystem& startSystem(const Family& f) { return *findStartSystem(f, true); }

@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <thread>
+#include <vector>
 
 #include "polynomial_eval.hpp"
 #include "relpos/complete/fiber.hpp"
@@ -39,6 +41,19 @@ TEST(StartSystem, TwoConicsHaveFourRoots) {
   EXPECT_EQ(s.total_degree_added, 0);
   expectDistinctRoots(f, s);
   EXPECT_EQ(&startSystem(f), &s);  // cached
+}
+
+// Threads asking at once for a signature not yet computed get the one start system, computed
+// once (the others wait for it, not for the cache's lock).
+TEST(StartSystem, ThreadsAskingAtOnceShareOneComputation) {
+  const testing::DenseFamily f(2, 2);
+  std::vector<const StartSystem*> got(4, nullptr);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    threads.emplace_back([&, i] { got[i] = &startSystem(f); });
+  for (std::thread& t : threads) t.join();
+  for (const StartSystem* s : got) EXPECT_EQ(s, got[0]);
+  EXPECT_EQ(got[0]->roots.size(), 4u);  // Bézout
 }
 
 TEST(StartSystem, StewartGoughHasFortyRoots) {
