@@ -37,18 +37,24 @@ bool inSpan(const Vector3d& v, const std::vector<Vector3d>& basis) {
 
 // What the kept equations hold constant on any connected piece of their set through the base.
 struct Pinned {
+  Matrix3d R0 = Matrix3d::Identity();    // the base's rotation (signs of world directions)
   bool rotation = false;                 // the angles' rank is 3 in the rotation's coordinates
+  bool exact = false;                    // ...and R_exact that rotation, from fixed data
+  Matrix3d R_exact = Matrix3d::Identity();
   std::vector<Vector3d> slides;          // with the rotation pinned: every plane row's normal
   std::vector<std::array<double, 3>> u;  // per mobile direction: its (orthonormal) rows...
   std::vector<std::vector<Vector3d>> rows, zero_rows;  // ...and those of value 0
   std::vector<std::array<double, 3>> p;                // per mobile point: its plane rows' normals
   std::vector<std::vector<Vector3d>> normals;
 
-  // The index of direction k (or −k) among `keys`, of point k with `point`; −1: none.
+  // The index of direction k (or one parallel to it) among `keys`, of point k with `point`;
+  // −1: none.
   static int find(const std::vector<std::array<double, 3>>& keys, const std::array<double, 3>& k,
                   bool point = false) {
     for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] == k || (!point && vec(keys[i]) == -vec(k))) return static_cast<int>(i);
+      if (keys[i] == k || (!point && vec(keys[i]).cross(vec(k)).norm() <=
+                                         kInSpan * vec(keys[i]).norm() * vec(k).norm()))
+        return static_cast<int>(i);
     return -1;
   }
   // A direction is pinned by two independent angle rows (then finitely many directions meet
@@ -57,13 +63,19 @@ struct Pinned {
     const int i = find(u, d);
     return rotation || (i >= 0 && rows[static_cast<std::size_t>(i)].size() >= 2);
   }
-  // The world direction (up to sign) of mobile direction d when two right angles pin it, to
-  // the rounding of the fixed data (their normals' cross product); false otherwise.
+  // The world direction R d of mobile direction d (unit) when two right angles pin it, to the
+  // rounding of the fixed data (their normals' cross product, its sign the base's), or when
+  // the rotation is known from two such directions; false otherwise.
   bool world(const std::array<double, 3>& d, Vector3d* w) const {
     const int i = find(u, d);
-    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
-    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
-    *w = z[0].cross(z[1]).normalized();
+    if (i >= 0 && zero_rows[static_cast<std::size_t>(i)].size() >= 2) {
+      const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
+      *w = z[0].cross(z[1]).normalized();
+      if (w->dot(R0 * vec(d)) < 0.0) *w = -*w;
+      return true;
+    }
+    if (!exact) return false;
+    *w = (R_exact * vec(d)).normalized();
     return true;
   }
   // Point q's coordinate along normal n is held (and every point's, with the rotation pinned).
@@ -109,21 +121,18 @@ struct Pinned {
     }
     return span;
   }
-  // A pinned direction perpendicular to the held span of point q (exactly: its value-0 angle
-  // rows span the same plane), or along it (their cross product in it).
+  // Point q held across (along) the world direction w of pinned direction d: its held span
+  // holds w's orthogonal plane (holds w).
   bool across(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
-    const int i = find(u, d);
-    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
+    Vector3d w;
+    if (!world(d, &w)) return false;
     const std::vector<Vector3d> h = held(q);
-    for (const Vector3d& e : h)
-      if (!inSpan(e, zero_rows[static_cast<std::size_t>(i)])) return false;
-    return h.size() == 2;
+    const Vector3d e = w.unitOrthogonal();
+    return inSpan(e, h) && inSpan(w.cross(e), h);
   }
   bool along(const std::array<double, 3>& d, const std::array<double, 3>& q) const {
-    const int i = find(u, d);
-    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() < 2) return false;
-    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
-    return inSpan(z[0].cross(z[1]), held(q));
+    Vector3d w;
+    return world(d, &w) && inSpan(w, held(q));
   }
 };
 
@@ -199,9 +208,85 @@ bool readsAcross(const Condition& c, const std::array<double, 3>& v, const Vecto
 
 // What the equations kept (keep[i]) pin on their set through the base; `rows`: every
 // equation's gradient there.
+// The rotation taking unit directions a, b (not parallel) to a2, b2 (at the same angle).
+Matrix3d rotationTaking(const Vector3d& a, const Vector3d& b, const Vector3d& a2,
+                        const Vector3d& b2) {
+  auto frame = [](const Vector3d& x, const Vector3d& y) {
+    Matrix3d F;
+    const Vector3d n = x.cross(y).normalized();
+    F << x, n, x.cross(n);
+    return F;
+  };
+  return frame(a2, b2) * frame(a, b).transpose();
+}
+
+// Mobile direction d held to world w (up to sign): rows across w, of value 0.
+void pinDirection(Pinned* pinned, const std::array<double, 3>& d, const Vector3d& w) {
+  int k = Pinned::find(pinned->u, d);
+  if (k < 0) {
+    k = static_cast<int>(pinned->u.size());
+    pinned->u.push_back(d), pinned->rows.emplace_back(), pinned->zero_rows.emplace_back();
+  }
+  const Vector3d e = w.unitOrthogonal();
+  for (const Vector3d& n : {e, w.cross(e)}) {
+    extendsSpan(n, kInSpan, &pinned->rows[static_cast<std::size_t>(k)]);
+    extendsSpan(n, kInSpan, &pinned->zero_rows[static_cast<std::size_t>(k)]);
+  }
+}
+
+// A mobile line through two fixed points (each a pair of zero offsets from planes through the
+// line, pose_conditions.cpp): its direction held to theirs, `line` its mobile direction.
+void pinLinesThroughTwoPoints(const ConditionSystem& system, const std::vector<bool>& keep,
+                              Pinned* pinned) {
+  struct Through {
+    std::array<double, 3> p;
+    Vector3d line, q;
+  };
+  std::vector<Through> through;  // each fixed point found on a mobile line
+  const std::size_t n = keep.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const Condition& e = system.equations[a];
+      const Condition& f = system.equations[b];
+      if (!keep[a] || !keep[b] || e.kind != ConditionKind::kPlanePoint ||
+          f.kind != ConditionKind::kPlanePoint || e.p != f.p || e.q != f.q || e.lo != 0.0 ||
+          f.lo != 0.0)
+        continue;
+      const Vector3d line = vec(e.u).cross(vec(f.u));
+      if (line.norm() < 0.5) continue;
+      through.push_back({e.p, line.normalized(), vec(e.q)});
+    }
+  for (std::size_t a = 0; a < through.size(); ++a)
+    for (std::size_t b = a + 1; b < through.size(); ++b) {
+      const Through& s = through[a];
+      const Through& t = through[b];
+      const Vector3d step = t.q - s.q;
+      if (s.p != t.p || s.line.cross(t.line).norm() > kInSpan || step.norm() == 0.0) continue;
+      std::array<double, 3> line;
+      for (int i = 0; i < 3; ++i) line[static_cast<std::size_t>(i)] = s.line[i];
+      pinDirection(pinned, line, step.normalized());
+    }
+}
+
+// The rotation, when two directions not parallel are held to world directions known exactly.
+void pinRotationExactly(Pinned* pinned) {
+  for (std::size_t a = 0; a < pinned->u.size(); ++a)
+    for (std::size_t b = a + 1; b < pinned->u.size(); ++b) {
+      Vector3d wa, wb;
+      const Vector3d ua = vec(pinned->u[a]).normalized(), ub = vec(pinned->u[b]).normalized();
+      if (ua.cross(ub).norm() < 0.1 || !pinned->world(pinned->u[a], &wa) ||
+          !pinned->world(pinned->u[b], &wb))
+        continue;
+      pinned->R_exact = rotationTaking(ua, ub, wa, wb);
+      pinned->exact = pinned->rotation = true;
+      return;
+    }
+}
+
 Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
-                const std::vector<Vector6d>& rows) {
+                const std::vector<Vector6d>& rows, const Matrix3d& R0) {
   Pinned pinned;
+  pinned.R0 = R0;
   std::vector<Vector3d> turns;
   for (std::size_t i = 0; i < keep.size(); ++i) {
     const Condition& c = system.equations[i];
@@ -221,6 +306,8 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
     }
   }
   pinned.rotation = turns.size() >= 3;
+  pinLinesThroughTwoPoints(system, keep, &pinned);
+  pinRotationExactly(&pinned);
   // A fixed point's offset from a mobile plane whose normal two right angles pin (to world w):
   // the plane's point held along w. Two such offsets of 0 from planes through one mobile line
   // whose direction is so pinned (the fixed point on the line): the line's point held across it.
@@ -280,10 +367,11 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
 // pose).
 // `guarded`: the conditions so dropped that hold only where their lines are not parallel.
 bool droppedConstant(const ConditionSystem& system, const std::vector<bool>& keep,
-                     const std::vector<Vector6d>& rows, std::vector<std::size_t>* guarded) {
+                     const std::vector<Vector6d>& rows, const Matrix3d& R0,
+                     std::vector<std::size_t>* guarded) {
   guarded->clear();
   if (std::count(keep.begin(), keep.end(), true) == 6) return true;
-  const Pinned pinned = pinnedBy(system, keep, rows);
+  const Pinned pinned = pinnedBy(system, keep, rows, R0);
   for (std::size_t i = 0; i < keep.size(); ++i) {
     bool guard = false;
     if (keep[i]) continue;
@@ -352,7 +440,7 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
   const std::size_t rank = basis.size();
   if (rank == n) return false;
   std::vector<std::size_t> guarded;
-  bool found = droppedConstant(system, keep, rows, &guarded);
+  bool found = droppedConstant(system, keep, rows, R0, &guarded);
   // Otherwise another choice of the dependent ones to drop: which one a dependence names is
   // the greedy order's accident (a point's distance dropped where the offsets that hold it
   // were kept, or the reverse).
@@ -361,7 +449,7 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
   for (int tries = 0; !found && tries < kMostChoices; ++tries) {
     std::fill(keep.begin(), keep.end(), true);
     for (std::size_t i : drop) keep[i] = false;
-    found = independent(rows, keep) && droppedConstant(system, keep, rows, &guarded);
+    found = independent(rows, keep) && droppedConstant(system, keep, rows, R0, &guarded);
     if (!found && !nextChoice(&drop, n)) break;
   }
   if (!found) return false;

@@ -326,6 +326,21 @@ void faceOnFaceEdgeCylinderAndParallel(Problem& p, Rng& rng, const Isometry3d& X
   p.addConstraint("distance", "rail", "axis", ((X * m - b) - (X * m - b).dot(e) * e).norm());
 }
 
+// A pin through two holes (a mobile line through two fixed points) and square to a fixed rail
+// across them (DOF 2: the pin's slide and turn): the holes pin its direction, the right angle
+// says it again.
+void pinThroughTwoHolesSquareToARail(Problem& p, Rng& rng, const Isometry3d& X) {
+  const Vector3d m = rng.point(0.5), u = rng.unit();
+  const Vector3d a = X * m, w = X.linear() * u;
+  p.addFixedFeature("hole0", Feature::makePoint(a + rng.uniform(-1.0, 1.0) * w));
+  p.addFixedFeature("hole1", Feature::makePoint(a + rng.uniform(1.5, 2.0) * w));
+  p.addFixedFeature("rail", Feature::makeLine(rng.point(), w.cross(rng.unit()).normalized()));
+  p.addMobileFeature("pin", Feature::makeLine(m, u));
+  p.addConstraint("coincident", "hole0", "pin");
+  p.addConstraint("coincident", "hole1", "pin");
+  p.addConstraint("perpendicular", "rail", "pin");
+}
+
 // A face parallel to the table and two rollers lying along it under two beams across above
 // (DOF 3): the first tangency sets the height, the second says it again.
 void twoRollersUnderTwoBeams(Problem& p, Rng& rng, const Isometry3d& X) {
@@ -359,7 +374,9 @@ TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
                             {"face on face, an edge in it", 3, faceOnFaceAndAnEdgeInIt},
                             {"two rollers under two beams", 3, twoRollersUnderTwoBeams},
                             {"face on face, edge, sleeve, parallel", 0,
-                             faceOnFaceEdgeCylinderAndParallel}};
+                             faceOnFaceEdgeCylinderAndParallel},
+                            {"pin through two holes, square to a rail", 2,
+                             pinThroughTwoHolesSquareToARail}};
   Rng rng(2020);
   std::mt19937_64 sampler(20);
   for (const Repeated& r : cases)
