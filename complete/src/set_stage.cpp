@@ -24,6 +24,9 @@ constexpr double kCheckTolerances = 10.0;
 // A chart's first box and the largest it may grow to (normalised coordinates: the quaternion's
 // vector part, a turn of about 150° at 4; lengths over the problem's size).
 constexpr double kFirstBox = 1e-3;
+// When the starts find no pose and the interval search does not prove that none exists: this
+// many times as many starts in all.
+constexpr int kMoreStarts = 4;
 constexpr double kLargestBox = 4.0;
 
 // Grows the chart from the first box, or from smaller ones when the base is that close to a
@@ -179,53 +182,71 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   const SourceMask sources = n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
   std::vector<Branch> branches;
   int points = 0;
-  for (std::size_t a = 0; a < systems.size(); ++a) {
-    // the charts' equations without those the others imply (the proof below keeps them all)
-    ConditionSystem s = systems[a];
-    const double length_tol = tol.length / s.frame.scale;
+  // Per alternative: the charts' equations without those the others imply (the proof of
+  // inconsistency below keeps them all), and its charts so far.
+  struct Alternative {
+    ConditionSystem s;
     std::vector<detail::ImpliedEquation> implied;
-    detail::dropImpliedEquations(&s, length_tol, tol.angle, &implied);
+    detail::EquationSlack slack;
+    std::vector<std::shared_ptr<const ChartData>> charts;
+  };
+  std::vector<Alternative> alternatives(systems.size());
+  for (std::size_t a = 0; a < systems.size(); ++a) {
+    Alternative& alt = alternatives[a];
+    alt.s = systems[a];
+    detail::dropImpliedEquations(&alt.s, tol.length / alt.s.frame.scale, tol.angle, &alt.implied);
     // equations said twice may be apart by the rounding of a far-placed problem: a pose meeting
     // them to a thousandth of the tolerance is found (the chart's proof then takes the exact one)
-    detail::EquationSlack slack;
-    slack.length = std::max(slack.length, 1e-3 * length_tol);
-    slack.angle = std::max(slack.angle, 1e-3 * tol.angle);
-    std::vector<std::shared_ptr<const ChartData>> charts;
-    const std::size_t quota = std::max<std::size_t>(
-        1, (static_cast<std::size_t>(std::max(options.max_charts, 0)) + systems.size() - 1) /
-               systems.size());
-    // the same starts for every alternative, whatever the constraints' order
-    for (auto [R, t] : startPoses(problem, s, options.set_starts)) {
-      if (charts.size() >= quota) break;
-      if (!detail::findPoint(s, &R, &t, slack)) continue;
-      ++points;
-      if (covered(charts, R, t)) continue;
-      auto data = std::make_shared<ChartData>();
-      DroppedSlack earlier;
-      const double hint = charts.empty() ? 0.0 : 0.5 * smallestRadius(charts.front()->chart);
-      if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) ||
-          !grown(data->chart, hint) ||
-          !impliedHold(data->chart, implied, earlier, length_tol, tol.angle))
-        continue;
-      data->frame = s.frame;
-      const ChartManifold m(data);
-      if (!verified(m, problem, registry, tol)) continue;
-      charts.push_back(data);
-      Branch b;
-      b.manifold.emplace<ChartManifold>(m);
-      b.sources = sources;
-      b.exact = false;
-      const double spread = data->chart.slice * std::sqrt(static_cast<double>(data->chart.m));
-      b.certified = {spread * s.frame.scale, 2.0 * spread};
-      branches.push_back(std::move(b));
-    }
+    alt.slack.length = std::max(alt.slack.length, 1e-3 * tol.length / alt.s.frame.scale);
+    alt.slack.angle = std::max(alt.slack.angle, 1e-3 * tol.angle);
   }
+  const std::size_t quota = std::max<std::size_t>(
+      1, (static_cast<std::size_t>(std::max(options.max_charts, 0)) + systems.size() - 1) /
+             systems.size());
+  // The descents from starts [first, last) of every alternative (the same starts for each,
+  // whatever the constraints' order), a chart about each pose found that no chart holds yet.
+  auto search = [&](int first, int last) {
+    for (Alternative& alt : alternatives) {
+      const ConditionSystem& s = alt.s;
+      const double length_tol = tol.length / s.frame.scale;
+      const auto starts = startPoses(problem, s, last);
+      for (int k = first; k < last && alt.charts.size() < quota; ++k) {
+        auto [R, t] = starts[static_cast<std::size_t>(k)];
+        if (!detail::findPoint(s, &R, &t, alt.slack)) continue;
+        ++points;
+        if (covered(alt.charts, R, t)) continue;
+        auto data = std::make_shared<ChartData>();
+        DroppedSlack earlier;
+        const double hint =
+            alt.charts.empty() ? 0.0 : 0.5 * smallestRadius(alt.charts.front()->chart);
+        if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) ||
+            !grown(data->chart, hint) ||
+            !impliedHold(data->chart, alt.implied, earlier, length_tol, tol.angle))
+          continue;
+        data->frame = s.frame;
+        const ChartManifold m(data);
+        if (!verified(m, problem, registry, tol)) continue;
+        alt.charts.push_back(data);
+        Branch b;
+        b.manifold.emplace<ChartManifold>(m);
+        b.sources = sources;
+        b.exact = false;
+        const double spread = data->chart.slice * std::sqrt(static_cast<double>(data->chart.m));
+        b.certified = {spread * s.frame.scale, 2.0 * spread};
+        branches.push_back(std::move(b));
+      }
+    }
+  };
+  search(0, options.set_starts);
   std::string unproven;
   if (branches.empty() && points == 0) {
     // No pose found: perhaps there is none. Proven only by the interval search of every pose.
     const detail::ConflictProof proof =
         detail::proveConflict(systems, n, tol, options.exclusion_boxes);
     unproven = proof.why;
+    // Not proven: the descents may have missed (a set far from every start, a narrow one).
+    // More starts, before answering that nothing was found.
+    if (!proof.proven) search(options.set_starts, kMoreStarts * options.set_starts);
     if (proof.proven) {
       solution.branches.clear();
       solution.status = Status::kInconsistent;
@@ -244,7 +265,8 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   if (branches.empty()) {
     solution.message =
         points == 0 ? "no pose found by descent from " +
-                          std::to_string(options.set_starts * static_cast<int>(systems.size())) +
+                          std::to_string(kMoreStarts * options.set_starts *
+                                         static_cast<int>(systems.size())) +
                           " starts, and not proven inconsistent: " + unproven
                     : "the " + std::to_string(points) +
                           " poses found are singular points of the constraints or on a range's "
