@@ -1,5 +1,6 @@
 #include "dependent_equations.hpp"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +14,10 @@ namespace {
 constexpr double kZeroCosine = 1e-15;
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+// Directions at least this far apart (the sine of their angle) give orthonormal bases and cross
+// products whose rounding stays far under kInSpan's gap; lines this far from parallel are apart.
+constexpr double kApart = 0.1;
 
 // Greedy rank selection: whether v adds a direction to `basis` (orthonormal, extended by it
 // when it does): its part off their span above `gap` of its length.
@@ -39,8 +44,6 @@ bool inSpan(const Vector3d& v, const std::vector<Vector3d>& basis) {
 struct Pinned {
   Matrix3d R0 = Matrix3d::Identity();    // the base's rotation (signs of world directions)
   bool rotation = false;                 // the angles' rank is 3 in the rotation's coordinates
-  bool exact = false;                    // ...and R_exact that rotation, from fixed data
-  Matrix3d R_exact = Matrix3d::Identity();
   std::vector<Vector3d> slides;          // with the rotation pinned: every plane row's normal
   std::vector<std::array<double, 3>> u;  // per mobile direction: its (orthonormal) rows...
   std::vector<std::vector<Vector3d>> rows, zero_rows;  // ...and those of value 0
@@ -52,8 +55,9 @@ struct Pinned {
   static int find(const std::vector<std::array<double, 3>>& keys, const std::array<double, 3>& k,
                   bool point = false) {
     for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] == k || (!point && vec(keys[i]).cross(vec(k)).norm() <=
-                                         kInSpan * vec(keys[i]).norm() * vec(k).norm()))
+      if (keys[i] == k || (!point && vec(k).norm() > 0.0 &&
+                           vec(keys[i]).cross(vec(k)).norm() <=
+                               kInSpan * vec(keys[i]).norm() * vec(k).norm()))
         return static_cast<int>(i);
     return -1;
   }
@@ -64,35 +68,32 @@ struct Pinned {
     return rotation || (i >= 0 && rows[static_cast<std::size_t>(i)].size() >= 2);
   }
   // The world direction R d of mobile direction d (unit) when two right angles pin it, to the
-  // rounding of the fixed data (their normals' cross product, its sign the base's), or when
-  // the rotation is known from two such directions; false otherwise.
+  // rounding of the fixed data (their normals' cross product, its sign the base's); false
+  // otherwise.
   bool world(const std::array<double, 3>& d, Vector3d* w) const {
     const int i = find(u, d);
-    if (i >= 0 && zero_rows[static_cast<std::size_t>(i)].size() >= 2) {
-      const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
-      *w = z[0].cross(z[1]).normalized();
-      if (w->dot(R0 * vec(d)) < 0.0) *w = -*w;
-      return true;
-    }
-    if (!exact) return false;
-    *w = (R_exact * vec(d)).normalized();
+    if (i < 0 || zero_rows[static_cast<std::size_t>(i)].size() != 2) return false;
+    const std::vector<Vector3d>& z = zero_rows[static_cast<std::size_t>(i)];
+    *w = z[0].cross(z[1]).normalized();
+    if (w->dot(R0 * vec(d)) < 0.0) *w = -*w;
     return true;
   }
   // Point q's coordinate along normal n is held (and every point's, with the rotation pinned).
+  // (Spans of held normals grow only by normals far from them, kApart: their orthonormal bases
+  // then round far under kInSpan, and a normal in a span is never counted as a new one.)
   void hold(const std::array<double, 3>& q, const Vector3d& n) {
-    extendsSpan(n, kInSpan, &slides);
+    extendsSpan(n, kApart, &slides);
     int k = find(p, q, true);
     if (k < 0) {
       k = static_cast<int>(p.size());
       p.push_back(q), normals.emplace_back();
     }
-    extendsSpan(n, kInSpan, &normals[static_cast<std::size_t>(k)]);
+    extendsSpan(n, kApart, &normals[static_cast<std::size_t>(k)]);
   }
-  // The span of the point's coordinates held constant: its plane rows' normals (all of them
-  // with the rotation pinned: x = R p + t).
-  // A point q differing from p along a pinned direction moves with it (x_q − x_p = R (q − p)
-  // is pinned): its coordinates along p's normals are held too (a plane offset folds its value
-  // into the plane's point, pose_conditions.cpp: the same plane, another point on its normal).
+  // Whether point q moves with point r: the same, or differing along a pinned direction
+  // (x_q − x_r = R (q − r) is pinned): q's coordinates along r's held normals are held too (a
+  // plane offset folds its value into the plane's point, pose_conditions.cpp: the same plane,
+  // another point on its normal).
   bool movesWith(const std::array<double, 3>& q, const std::array<double, 3>& r) const {
     if (q == r) return true;
     const Vector3d step = vec(q) - vec(r);
@@ -102,12 +103,14 @@ struct Pinned {
         return true;
     return false;
   }
+  // The span of point q's coordinates held constant: the held normals of the points it moves
+  // with (every one with the rotation pinned: x = R p + t).
   std::vector<Vector3d> held(const std::array<double, 3>& q) const {
     if (rotation) return slides;
     std::vector<Vector3d> span;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (movesWith(q, p[i]))
-        for (const Vector3d& n : normals[i]) extendsSpan(n, kInSpan, &span);
+        for (const Vector3d& n : normals[i]) extendsSpan(n, kApart, &span);
     // Along the world direction w of a pinned direction v, any two points differ by a constant
     // ((R(q − p))·(R v) = (q − p)·v): w held for one point is held for every point.
     for (const std::array<double, 3>& v : u) {
@@ -115,7 +118,7 @@ struct Pinned {
       if (!world(v, &w)) continue;
       for (const std::vector<Vector3d>& n : normals)
         if (inSpan(w, n)) {
-          extendsSpan(w, kInSpan, &span);
+          extendsSpan(w, kApart, &span);
           break;
         }
     }
@@ -159,20 +162,17 @@ bool skewAlongPinned(const Condition& c, const Pinned& pinned) {
 // `guard`: set when that holds only where the lines c reads are not parallel (skewAlongPinned).
 bool constantWhere(const Condition& c, const Pinned& pinned, bool* guard) {
   *guard = false;
-  const std::size_t held = pinned.held(c.p).size();
+  if (c.kind == ConditionKind::kCosine) return pinned.direction(c.u);
+  const std::vector<Vector3d> h = pinned.held(c.p);
+  const std::size_t held = h.size();
   switch (c.kind) {
-    case ConditionKind::kCosine:
-      return pinned.direction(c.u);
     case ConditionKind::kPointPlane:
-      return inSpan(vec(c.d), pinned.held(c.p));
+      return inSpan(vec(c.d), h);
     case ConditionKind::kPointPoint:
       return held == 3;
-    case ConditionKind::kPointLine: {  // reads x across the fixed line d (to 1e-13 of it)
-      if (held == 3) return true;
-      const std::vector<Vector3d> h = pinned.held(c.p);
-      return h.size() == 2 && std::abs(h[0].dot(vec(c.d))) <= kInSpan &&
-             std::abs(h[1].dot(vec(c.d))) <= kInSpan;
-    }
+    case ConditionKind::kPointLine:  // reads x across the fixed line d (to 1e-13 of it)
+      return held == 3 || (held == 2 && std::abs(h[0].dot(vec(c.d))) <= kInSpan &&
+                           std::abs(h[1].dot(vec(c.d))) <= kInSpan);
     case ConditionKind::kLinePoint:  // reads w and x across w
       return pinned.direction(c.u) && (held == 3 || pinned.across(c.u, c.p));
     case ConditionKind::kPlanePoint:  // reads w and x along w
@@ -208,18 +208,6 @@ bool readsAcross(const Condition& c, const std::array<double, 3>& v, const Vecto
 
 // What the equations kept (keep[i]) pin on their set through the base; `rows`: every
 // equation's gradient there.
-// The rotation taking unit directions a, b (not parallel) to a2, b2 (at the same angle).
-Matrix3d rotationTaking(const Vector3d& a, const Vector3d& b, const Vector3d& a2,
-                        const Vector3d& b2) {
-  auto frame = [](const Vector3d& x, const Vector3d& y) {
-    Matrix3d F;
-    const Vector3d n = x.cross(y).normalized();
-    F << x, n, x.cross(n);
-    return F;
-  };
-  return frame(a2, b2) * frame(a, b).transpose();
-}
-
 // Mobile direction d held to world w (up to sign): rows across w, of value 0.
 void pinDirection(Pinned* pinned, const std::array<double, 3>& d, const Vector3d& w) {
   int k = Pinned::find(pinned->u, d);
@@ -268,21 +256,8 @@ void pinLinesThroughTwoPoints(const ConditionSystem& system, const std::vector<b
     }
 }
 
-// The rotation, when two directions not parallel are held to world directions known exactly.
-void pinRotationExactly(Pinned* pinned) {
-  for (std::size_t a = 0; a < pinned->u.size(); ++a)
-    for (std::size_t b = a + 1; b < pinned->u.size(); ++b) {
-      Vector3d wa, wb;
-      const Vector3d ua = vec(pinned->u[a]).normalized(), ub = vec(pinned->u[b]).normalized();
-      if (ua.cross(ub).norm() < 0.1 || !pinned->world(pinned->u[a], &wa) ||
-          !pinned->world(pinned->u[b], &wb))
-        continue;
-      pinned->R_exact = rotationTaking(ua, ub, wa, wb);
-      pinned->exact = pinned->rotation = true;
-      return;
-    }
-}
-
+// What the equations kept (keep[i]) pin on their set through the base; `rows`: every
+// equation's gradient there, R0 the base's rotation.
 Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
                 const std::vector<Vector6d>& rows, const Matrix3d& R0) {
   Pinned pinned;
@@ -299,15 +274,16 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
         pinned.u.push_back(c.u), pinned.rows.emplace_back(), pinned.zero_rows.emplace_back();
       }
       extendsSpan(vec(c.d), kInSpan, &pinned.rows[static_cast<std::size_t>(k)]);
+      // a right angle's normal far from the earlier ones' span (kApart): their orthonormal
+      // basis, and world()'s cross product of it, then round far under kInSpan
       if (std::abs(c.lo) <= kZeroCosine)
-        extendsSpan(vec(c.d), kInSpan, &pinned.zero_rows[static_cast<std::size_t>(k)]);
+        extendsSpan(vec(c.d), kApart, &pinned.zero_rows[static_cast<std::size_t>(k)]);
     } else if (c.kind == ConditionKind::kPointPlane) {
       pinned.hold(c.p, vec(c.d));
     }
   }
   pinned.rotation = turns.size() >= 3;
   pinLinesThroughTwoPoints(system, keep, &pinned);
-  pinRotationExactly(&pinned);
   // A fixed point's offset from a mobile plane whose normal two right angles pin (to world w):
   // the plane's point held along w. Two such offsets of 0 from planes through one mobile line
   // whose direction is so pinned (the fixed point on the line): the line's point held across it.
@@ -323,7 +299,7 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
     for (std::size_t b = a + 1; b < offsets.size(); ++b) {
       const Condition& e = system.equations[offsets[a]];
       const Condition& f = system.equations[offsets[b]];
-      if (e.p != f.p || e.lo != 0.0 || f.lo != 0.0) continue;
+      if (e.p != f.p || e.q != f.q || e.lo != 0.0 || f.lo != 0.0) continue;
       const Vector3d axis = vec(e.u).cross(vec(f.u));
       for (const std::array<double, 3>& v : pinned.u) {
         Vector3d w;
@@ -334,11 +310,17 @@ Pinned pinnedBy(const ConditionSystem& system, const std::vector<bool>& keep,
         pinned.hold(e.p, w.cross(across));
       }
     }
-  // Such a skew condition kept: the chart's proof keeps its gradient, and so n, nonzero over its
-  // piece, where it then holds the height (x − q)·w at one of the finitely many values it allows.
+  // Such a skew condition kept, its lines well apart at the base (n ≠ 0): on the piece the
+  // lines cannot turn parallel — there the kept equations are singular (the squared form's
+  // gradient vanishes; the plain one's set crosses the parallel poses' only where the height is
+  // 0 too), which the chart's proof excludes — so it holds the height (x − q)·w at one of the
+  // finitely many values it allows.
   for (std::size_t i = 0; i < keep.size(); ++i) {
+    const Condition& c = system.equations[i];
     Vector3d w;
-    if (keep[i] && skewAcross(system.equations[i], pinned, &w)) pinned.hold(system.equations[i].p, w);
+    if (keep[i] && skewAcross(c, pinned, &w) &&
+        (R0 * vec(c.u)).cross(vec(c.d)).norm() >= kApart * vec(c.u).norm() * vec(c.d).norm())
+      pinned.hold(c.p, w);
   }
   // Two independent equations that read only where a point is across a pinned direction's world
   // w (an offset along a normal across w, a distance to a fixed line along w, a distance or skew
@@ -453,22 +435,51 @@ bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Ve
     if (!found && !nextChoice(&drop, n)) break;
   }
   if (!found) return false;
-  *reduced = system;
-  reduced->equations.clear();
-  for (std::size_t i = 0; i < n; ++i)
-    (keep[i] ? reduced->equations : *dropped).push_back(system.equations[i]);
   // The guard of a skew distance dropped as constant only where its lines are not parallel:
   // the cosine of their angle kept within halfway from its value at the base to ±1.
+  std::vector<Condition> guards;
   for (std::size_t i : guarded) {
     Condition g = system.equations[i];
     g.kind = ConditionKind::kCosine;
     const double at_base = std::abs((R0 * vec(g.u)).dot(vec(g.d)));
+    if (!(at_base < 1.0)) return false;
     g.hi = 0.5 * (1.0 + at_base);
     g.lo = -g.hi;
-    if (!(at_base < 1.0)) return false;
-    reduced->inequalities.push_back(g);
+    guards.push_back(g);
   }
+  *reduced = system;
+  reduced->equations.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    (keep[i] ? reduced->equations : *dropped).push_back(system.equations[i]);
+  reduced->inequalities.insert(reduced->inequalities.end(), guards.begin(), guards.end());
   return true;
+}
+
+SourceMask dependentSources(const ConditionSystem& system, const Matrix3d& R0,
+                            const Vector3d& t0) {
+  const auto n = static_cast<Eigen::Index>(system.equations.size());
+  if (n == 0) return 0;
+  std::array<Dual<double>, 6> y;
+  for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
+  const LocalPose<Dual<double>> X(y);
+  Eigen::MatrixXd J(n, 6);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Dual<double> g =
+        evaluate(inBaseFrame(system.equations[static_cast<std::size_t>(i)], R0, t0), X);
+    for (int j = 0; j < 6; ++j) J(i, j) = g.g[j];
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  if (!(sv.size() > 0 && sv[0] > 0.0)) return 0;
+  SourceMask involved = 0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    // the k-th combination of the equations: its gradient is σ_k (none past the sixth)
+    if (k < sv.size() && sv[k] > 1e-6 * sv[0]) continue;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (std::abs(svd.matrixU()(i, k)) > 0.1)
+        involved |= sourceBit(system.equations[static_cast<std::size_t>(i)].source);
+  }
+  return involved;
 }
 
 }  // namespace relpos::complete::detail

@@ -32,4 +32,10 @@ namespace relpos::complete::detail {
 bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
                      ConditionSystem* reduced, std::vector<Condition>* dropped);
 
+// The input constraints (their bits) whose equations are dependent at pose (R0, t0): those with
+// weight in a combination of the equations' gradients that vanishes there (a singular value
+// under 1e-6 of the largest) — what a message names when no chart could be proven.
+SourceMask dependentSources(const ConditionSystem& system, const Matrix3d& R0,
+                            const Vector3d& t0);
+
 }  // namespace relpos::complete::detail

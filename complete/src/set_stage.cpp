@@ -10,6 +10,7 @@
 #include "implied_equations.hpp"
 #include "point_search.hpp"
 #include "relpos/complete/stage.hpp"
+#include "relpos/core/constraint_text.hpp"
 
 namespace relpos::complete {
 namespace {
@@ -69,7 +70,7 @@ struct DroppedSlack {
 };
 
 // The chart at pose (R, t): of all the equations, or where they are dependent, of those
-// independent there, the others constants on the piece (implied_equations.hpp) proven to hold
+// independent there, the others constants on the piece (dependent_equations.hpp) proven to hold
 // (within half the tolerance) at the chart's exact base, and so on its whole piece.
 bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, double length_tol,
              double angle_tol, Chart* chart, DroppedSlack* earlier) {
@@ -85,9 +86,11 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
   for (const detail::Condition& c : dropped) {
     double allowed = detail::toleranceInUnits(c, 0.5 * length_tol, 0.5 * angle_tol);
     if (c.kind == detail::ConditionKind::kSkew || c.kind == detail::ConditionKind::kSkewSquared) {
-      // h = (x − q)·n with |n| = sin of the lines' angle (constant here: the direction is
-      // pinned): a distance δ is h by |n|·δ, h² − k|n|² by 2·√k·|n|²·δ; |n| read at the base,
-      // less a margin far beyond how far the exact base is
+      // h = (x − q)·n with |n| = sin of the lines' angle: a distance δ is h by |n|·δ,
+      // h² − k|n|² by 2·√k·|n|²·δ; |n| read at the base, less a margin far beyond how far the
+      // exact base is. What is constant on the piece is the distance |h|/|n| (with the
+      // direction pinned |n| is too; a skew across a pinned direction, kept off parallel, turns
+      // with |n| but keeps that distance), so the base's bound on it holds on the whole piece.
       const double n = 0.9 * (R * detail::vec(c.u)).cross(detail::vec(c.d)).norm();
       allowed = c.kind == detail::ConditionKind::kSkew
                     ? n * allowed
@@ -164,6 +167,15 @@ std::vector<std::pair<Matrix3d, Vector3d>> startPoses(const Problem& problem,
   return starts;
 }
 
+// What to change when the poses found were singular: the constraints dependent there.
+std::string singularHint(const Problem& problem, const Registry& registry, SourceMask dependent) {
+  if (dependent == 0) return "";
+  return " (at them " + describeConstraints(problem, registry, dependent) +
+         " restrict one freedom twice, or meet tangentially: stating it once — dropping the "
+         "constraint the others imply, or a range instead of a tangency — lets the stage chart "
+         "the set)";
+}
+
 }  // namespace
 
 bool solveSets(const Problem& problem, const Registry& registry, const Tolerance& tol,
@@ -182,6 +194,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   const SourceMask sources = n >= 64 ? ~SourceMask{0} : (SourceMask{1} << n) - 1;
   std::vector<Branch> branches;
   int points = 0;
+  SourceMask dependent = 0;  // the constraints dependent at a pose found where no chart was
   // Per alternative: the charts' equations without those the others imply (the proof of
   // inconsistency below keeps them all), and its charts so far.
   struct Alternative {
@@ -219,10 +232,13 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
         DroppedSlack earlier;
         const double hint =
             alt.charts.empty() ? 0.0 : 0.5 * smallestRadius(alt.charts.front()->chart);
+        // no chart at a singular pose (or one so nearly singular that no proof holds)
         if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) ||
-            !grown(data->chart, hint) ||
-            !impliedHold(data->chart, alt.implied, earlier, length_tol, tol.angle))
+            !grown(data->chart, hint)) {
+          dependent |= detail::dependentSources(s, R, t);
           continue;
+        }
+        if (!impliedHold(data->chart, alt.implied, earlier, length_tol, tol.angle)) continue;
         data->frame = s.frame;
         const ChartManifold m(data);
         if (!verified(m, problem, registry, tol)) continue;
@@ -270,7 +286,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
                           " starts, and not proven inconsistent: " + unproven
                     : "the " + std::to_string(points) +
                           " poses found are singular points of the constraints or on a range's "
-                          "edge: no chart proven";
+                          "edge: no chart proven" + singularHint(problem, registry, dependent);
     return false;
   }
   solution.branches = std::move(branches);

@@ -1,5 +1,7 @@
 #include "unmatched_hint.hpp"
 
+#include "relpos/core/constraint_text.hpp"
+
 #include <cstdio>
 #include <set>
 #include <vector>
@@ -30,13 +32,12 @@ std::string valueText(const Problem& p, const ConstraintType* type, const InputC
   return "";
 }
 
-std::string describe(const Problem& p, const Registry& registry, std::size_t i) {
-  const InputConstraint& c = p.constraints[i];
-  const ConstraintType* type = registry.constraintType(c.type);
-  std::string s = std::to_string(i);
-  if (!c.id.empty()) s += " '" + c.id + "'";
-  return s + " (" + c.type + " " + c.fixed_name + "–" + c.mobile_name + valueText(p, type, c) +
-         ")";
+// The constraints of mask `which` (the first 64).
+std::vector<std::size_t> listed(const Problem& p, SourceMask which) {
+  std::vector<std::size_t> list;
+  for (std::size_t i = 0; i < p.constraints.size() && i < 64; ++i)
+    if (which >> i & 1) list.push_back(i);
+  return list;
 }
 
 // The hint for the pattern the constraints form, the commonest first.
@@ -65,16 +66,33 @@ std::string hint(const Problem& p, const std::vector<std::size_t>& involved) {
 
 std::string explainUnmatched(const Problem& problem, const Registry& registry,
                              SourceMask involved) {
-  std::vector<std::size_t> list;
-  for (std::size_t i = 0; i < problem.constraints.size() && i < 64; ++i)
-    if (involved >> i & 1) list.push_back(i);
+  const std::vector<std::size_t> list = listed(problem, involved);
   if (list.empty()) return "";
-  std::string s = "of ";
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    if (k > 0) s += k + 1 == list.size() ? " and " : ", ";
-    s += describe(problem, registry, list[k]);
-  }
-  return s + ". " + hint(problem, list);
+  return "of " + describeConstraints(problem, registry, involved) + ". " + hint(problem, list);
 }
 
 }  // namespace relpos::detail
+
+namespace relpos {
+
+std::string describeConstraint(const Problem& p, const Registry& registry, std::size_t i) {
+  const InputConstraint& c = p.constraints[i];
+  const ConstraintType* type = registry.constraintType(c.type);
+  std::string s = std::to_string(i);
+  if (!c.id.empty()) s += " '" + c.id + "'";
+  return s + " (" + c.type + " " + c.fixed_name + "–" + c.mobile_name +
+         detail::valueText(p, type, c) + ")";
+}
+
+std::string describeConstraints(const Problem& problem, const Registry& registry,
+                                SourceMask which) {
+  const std::vector<std::size_t> list = detail::listed(problem, which);
+  std::string s;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    if (k > 0) s += k + 1 == list.size() ? " and " : ", ";
+    s += describeConstraint(problem, registry, list[k]);
+  }
+  return s;
+}
+
+}  // namespace relpos

@@ -14,7 +14,9 @@
 #include "local_dof.hpp"
 #include "problem_transforms.hpp"
 #include "ranged_problems.hpp"
+#include "dependent_equations.hpp"
 #include "relpos/complete/stage.hpp"
+#include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
@@ -400,6 +402,92 @@ TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
         }
       }
     }
+}
+
+// Five points on integer geometry (a problem of the random sweeps): two of them, on a fixed
+// plane and on a fixed line, meet tangentially at every pose found, so no chart is proven; the
+// message names those two (what to restate), not the others.
+TEST(ChartStage, SingularPosesNameTheConstraintsDependentThere) {
+  const std::string text =
+      R"({"relpos":1,"name":"tangent-points","units":{"angle":"rad"},"fixed":{"name":"base","pose":)"
+      R"({"position":[2.0,0.0,-2.0],"orientation":[0.0,1.0,0.0,-0.0]},"features":{"f0":{"point":[-1)"
+      R"(.0,-2.0,-2.0]},"f1":{"line":{"point":[-2.0,-3.0,0.262519197345668],"direction":[0.0,0.0,1.)"
+      R"(0]}},"f2":{"plane":{"point":[2.953630850937004,-1.6260000041289704,2.0],"normal":[0.0,0.0,)"
+      R"(-1.0]}},"f3":{"line":{"point":[2.0,-0.3654951065038261,-2.0],"direction":[0.0,1.0,-0.0]}},)"
+      R"("f4":{"point":[-2.0,0.0,1.0]}}},"mobile":{"name":"part","pose":{"position":[1.138786990139)"
+      R"(4296,-1.629914808336821,-0.4819966466734906],"orientation":[-0.13295494138713781,0.0068497)"
+      R"(86450644206,-0.016550874729518886,0.9909602073403407]},"features":{"m0":{"point":[0.0,2.0,)"
+      R"(1.0]},"m1":{"point":[2.0,0.0,2.0]},"m2":{"point":[-2.0,-2.0,0.0]},"m3":{"point":[-2.0,2.0,)"
+      R"(0.0]},"m4":{"point":[2.0,-1.0,0.0]}}},"constraints":[{"type":"distance","fixed":"f0","mobi)"
+      R"(le":"m0","value":1.0,"orientation":"aligned","id":"c0"},{"type":"coincident","fixed":"f1",)"
+      R"("mobile":"m1","orientation":"aligned","id":"c1"},{"type":"coincident","fixed":"f2","mobile)"
+      R"(":"m2","orientation":"aligned","id":"c2"},{"type":"coincident","fixed":"f3","mobile":"m3",)"
+      R"("orientation":"aligned","id":"c3"},{"type":"distance","fixed":"f4","mobile":"m4","min":0.9)"
+      R"(024483944329198,"orientation":"aligned","id":"c4"}]})";
+  ParseResult parsed = parseSpec(text, builtinRegistry());
+  ASSERT_TRUE(parsed.problem.has_value());
+  const Solution s = solveByCharts(*parsed.problem);
+  ASSERT_EQ(s.status, Status::kUnhandled) << s.message;
+  EXPECT_NE(s.message.find("at them 2 'c2' (coincident f2–m2) and 3 'c3' (coincident f3–m3)"),
+            std::string::npos)
+      << s.message;
+}
+
+// A block's vertical edge on a corner whose two faces touch two different fixed points, the
+// corner on a slope that the faces' circle of reach (its diameter the two points) touches: the
+// set is the slide along the edge only, at a tangency. Two offsets of *different* fixed points
+// from the faces do not hold the corner (it turns about the circle), so the slope's equation,
+// dependent at the known pose, is not a constant there: never dropped as one (a review found it
+// was), and every pose of every chart found meets it.
+TEST(ChartStage, TwoFacesOnTwoPointsDoNotHoldTheirCorner) {
+  const double s = 1.0 / std::sqrt(2.0);
+  Problem p;
+  p.addFixedFeature("q1", Feature::makePoint(Vector3d(0, 0, 0)));
+  p.addFixedFeature("q2", Feature::makePoint(Vector3d(2, 0, 0)));
+  p.addFixedFeature("post", Feature::makeLine(Vector3d(0, 0, 0), Vector3d(0, 0, 1)));
+  p.addFixedFeature("slope", Feature::makePlane(Vector3d(1 + s, s, 0), Vector3d(s, s, 0)));
+  p.addMobileFeature("face_a", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitX()));
+  p.addMobileFeature("face_b", Feature::makePlane(Vector3d::Zero(), Vector3d::UnitY()));
+  p.addMobileFeature("edge", Feature::makeLine(Vector3d::Zero(), Vector3d::UnitZ()));
+  p.addMobileFeature("corner", Feature::makePoint(Vector3d::Zero()));
+  p.addConstraint("parallel", "post", "edge");
+  p.addConstraint("coincident", "q1", "face_a");
+  p.addConstraint("coincident", "q2", "face_b");
+  p.addConstraint("coincident", "slope", "corner");
+  // the known pose: the corner at the tangent point, face a's normal towards q2
+  const Vector3d corner(1 + s, s, 0), x = (Vector3d(2, 0, 0) - corner).normalized();
+  Matrix3d R;
+  R << x, Vector3d::UnitZ().cross(x), Vector3d::UnitZ();
+  Isometry3d X = Isometry3d::Identity();
+  X.linear() = R;
+  X.translation() = corner;
+  ASSERT_LT(worstViolation(p, X), 1e-9) << "generator bug";
+  // at the known pose the equations are dependent; the slope's offset is not a constant there
+  std::vector<complete::detail::ConditionSystem> systems;
+  std::string why;
+  ASSERT_TRUE(complete::detail::buildConditionSystems(p, builtinRegistry(), &systems, &why));
+  for (const complete::detail::ConditionSystem& cs : systems) {
+    const Isometry3d Xn = cs.frame.scaledPose(X);
+    complete::detail::ConditionSystem reduced;
+    std::vector<complete::detail::Condition> dropped;
+    if (complete::detail::reduceDependent(cs, Xn.linear(), Xn.translation(), &reduced,
+                                          &dropped)) {
+      for (const complete::detail::Condition& c : dropped)
+        EXPECT_NE(c.source, 3) << "the slope's offset dropped as a constant";
+    }
+  }
+  std::mt19937_64 sampler(7);
+  for (const Isometry3d& start : {X, Isometry3d(Eigen::Translation3d(0.3, -0.2, 0.4)) * X}) {
+    p.mobile.pose = start;
+    const Solution sol = solveByCharts(p);
+    for (const Branch& b : sol.branches) {
+      const Manifold& m = *b.manifold;
+      for (int k = 0; k < 32; ++k) {
+        const Isometry3d Y = m.pose(sampleParams(m, sampler));
+        EXPECT_LT(worstViolation(p, Y), 1e-8) << "dof " << m.dof() << " " << poseText(Y);
+      }
+    }
+  }
 }
 
 // An angle equation implied by two others on the same mobile direction (its fixed direction in
