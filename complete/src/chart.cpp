@@ -226,7 +226,7 @@ bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
   return true;
 }
 
-bool growChart(Chart& c, double start, double limit) {
+bool growChart(Chart& c, double start, double limit, bool each_axis) {
   std::array<double, 6> r{};
   for (int j = 0; j < c.d; ++j) r[j] = start;
   double sigma = 0.0;
@@ -256,7 +256,7 @@ bool growChart(Chart& c, double start, double limit) {
     factor = std::sqrt(factor);
     if (r[0] * factor <= limit) tryBox(scaled(factor));
   }
-  for (int j = 0; j < c.d; ++j)
+  for (int j = 0; j < c.d && each_axis; ++j)
     while (r[j] * 2.0 <= limit) {
       std::array<double, 6> box = r;
       box[j] *= 2.0;

@@ -37,9 +37,9 @@ bool makeChart(const ConditionSystem& system, const Matrix3d& R0, const Vector3d
 // intervals): true with the slice σ when both hold.
 bool certifyChart(const Chart& chart, const std::array<double, 6>& radius, double* slice);
 
-// Grows the box from `start` (every tangent coordinate alike, then each alone) while
-// certifyChart holds, up to `limit`; false when not even `start` holds.
-bool growChart(Chart& chart, double start, double limit);
+// Grows the box from `start` (every tangent coordinate alike, then — `each_axis` — each alone)
+// while certifyChart holds, up to `limit`; false when not even `start` holds.
+bool growChart(Chart& chart, double start, double limit, bool each_axis = true);
 
 // Whether every condition of `extra` (in the system's frame) holds within `tolerance` (per
 // condition) at the exact pose of the chart's equations at θ = 0: Krawczyk's test proves that

@@ -34,9 +34,11 @@ constexpr double kLargestBox = 4.0;
 // range's edge or to where the equations' Jacobian turns singular: a small chart is still a
 // certified piece of the set.
 // `hint`: a box the charts of the same set before proved in every coordinate (0: none), tried
-// first — the growth from there costs a few proofs, not the dozen from the first box.
+// first — the growth from there costs a few proofs, not the dozen from the first box; and such
+// a chart grows only in every coordinate alike (the first chart of the set has reached along
+// each).
 bool grown(Chart& chart, double hint) {
-  if (hint > kFirstBox && detail::growChart(chart, hint, kLargestBox)) return true;
+  if (hint > kFirstBox && detail::growChart(chart, hint, kLargestBox, false)) return true;
   double first = kFirstBox;
   for (int k = 0; k < 4; ++k, first *= 0.1)  // 1e-3 down to 1e-6
     if (detail::growChart(chart, first, kLargestBox)) return true;

@@ -57,9 +57,11 @@ struct StageOptions {
   // Sets of poses (solveSets): the start poses per alternative of the constraints (the mobile
   // object's own, then seeded random ones) and the most charts (branches) an answer holds,
   // shared among the alternatives (each at least one: an "either" orientation's other side is
-  // another piece of the set). Each chart costs 50-150 µs to prove.
+  // another piece of the set). Each chart costs about 100 µs to find and prove (the random
+  // 2-4-constraint problems of bench/fallback_bench.cpp: median 120 µs with one, 200 µs with
+  // two, 420 µs with four).
   int set_starts = 12;
-  int max_charts = 4;
+  int max_charts = 2;
   // When no start leads to a pose: the boxes each attempt of the interval proof that none exists
   // may examine (the whole problem's, then each with one constraint dropped, for the conflict).
   int exclusion_boxes = 6000;
