@@ -206,8 +206,6 @@ bool readsAcross(const Condition& c, const std::array<double, 3>& v, const Vecto
   }
 }
 
-// What the equations kept (keep[i]) pin on their set through the base; `rows`: every
-// equation's gradient there.
 // Mobile direction d held to world w (up to sign): rows across w, of value 0.
 void pinDirection(Pinned* pinned, const std::array<double, 3>& d, const Vector3d& w) {
   int k = Pinned::find(pinned->u, d);

@@ -15,6 +15,7 @@
 #include "relpos/manifolds/rotation/fixed.hpp"
 #include "relpos/manifolds/separable.hpp"
 #include "relpos/manifolds/translation/point.hpp"
+#include "start_system.hpp"
 
 namespace relpos::complete {
 namespace {
@@ -101,7 +102,8 @@ FiberOptions fiberOptions(const StageOptions& options, const Family& family) {
 
 std::string noStoredStartSystem(const Family& family) {
   return "no stored start system for the constraint signature '" + family.signature() +
-         "' (computing one while solving is off)";
+         "' (computing one while solving is off, or would take more than " +
+         std::to_string(detail::kSolvingStepBudget) + " tracking steps)";
 }
 
 // Every root the fiber certified: the non-real ones must be proven non-real for the list to be

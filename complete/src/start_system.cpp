@@ -75,9 +75,18 @@ class RootSet {
 };
 
 // Endpoints at p_to of the paths from `starts` at p_from (straight segment: both generic).
+// The predictor-corrector steps a computation may still take (unlimited unless `limited`).
+struct StepBudget {
+  std::int64_t left = 0;
+  bool limited = false;
+  std::int64_t* counter() { return limited ? &left : nullptr; }
+  bool exceeded() const { return limited && left < 0; }
+};
+
+// `budget` (when set): each path's steps taken from it; past it the tracking stops.
 std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& shape,
                                const std::vector<Complex>& p_from, const std::vector<Complex>& p_to,
-                               const std::vector<CVec>& starts) {
+                               const std::vector<CVec>& starts, StepBudget* budget = nullptr) {
   const detail::CoefficientPolynomials poly =
       detail::interpolateSegment(f, p_from.data(), p_to.data());
   std::vector<Complex> end(shape.terms());
@@ -87,15 +96,16 @@ std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& sha
   out.reserve(starts.size());
   for (const CVec& s : starts) {
     const detail::PathEnd e = tracker.track(s);
+    if (budget && budget->limited && (budget->left -= e.steps) < 0) break;
     if (e.status == detail::PathStatus::kFinite) out.push_back(e.x);
   }
   return out;
 }
 
 // Monodromy loops at p0 from the roots in `set` until kStaleLoops loops add nothing (or
-// kMaxLoops); returns the loops run.
+// kMaxLoops, or the budget runs out); returns the loops run.
 int monodromy(const Family& f, const detail::CompiledShape& shape, const std::vector<Complex>& p0,
-              std::uint64_t seed, RootSet& set) {
+              std::uint64_t seed, RootSet& set, StepBudget& budget) {
   const int np = f.parameterCount();
   // Loop points: complex Gaussian, at the scale of the member's parameters.
   double scale = 0.0;
@@ -109,12 +119,13 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
     return p;
   };
   int stale = 0, loops = 0;
-  while (stale < kStaleLoops && loops < kMaxLoops) {
+  while (stale < kStaleLoops && loops < kMaxLoops && !budget.exceeded()) {
     ++loops;
     const std::vector<Complex> p1 = randomPoint(), p2 = randomPoint();
-    std::vector<CVec> x = trackSegment(f, shape, p0, p1, set.roots());
-    x = trackSegment(f, shape, p1, p2, x);
-    x = trackSegment(f, shape, p2, p0, x);
+    std::vector<CVec> x = trackSegment(f, shape, p0, p1, set.roots(), &budget);
+    x = trackSegment(f, shape, p1, p2, x, &budget);
+    x = trackSegment(f, shape, p2, p0, x, &budget);
+    if (budget.exceeded()) break;
     int added = 0;
     for (const CVec& e : x) added += set.add(e) ? 1 : 0;
     stale = added == 0 ? stale + 1 : 0;
@@ -127,8 +138,16 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
 namespace detail {
 
 std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
-                                                std::uint64_t seed) {
+                                                std::uint64_t seed, std::uint64_t max_steps) {
   auto out = std::make_unique<StartSystem>();
+  StepBudget budget;
+  budget.limited = max_steps > 0;
+  budget.left = static_cast<std::int64_t>(std::min<std::uint64_t>(max_steps, INT64_MAX));
+  auto overBudget = [&] {
+    out->roots.clear();
+    out->check = "over the step budget";
+    return std::move(out);
+  };
   const CompiledShape shape(f.shape());
   const int n = shape.variables();
   const int np = f.parameterCount();
@@ -145,13 +164,17 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
     out->check = "seed root not certified";
     return out;
   }
-  out->monodromy_loops = monodromy(f, shape, p0, mixSeed(seed, 1), set);
+  out->monodromy_loops = monodromy(f, shape, p0, mixSeed(seed, 1), set, budget);
+  if (budget.exceeded()) return overBudget();
   out->check = "monodromy";
   const std::uint64_t bezout = bezoutNumber(shape);
   if (bezout > 0 && bezout <= max_bezout) {
     // Cross-check: every root the total-degree homotopy finds, added.
     const std::size_t before = set.roots().size();
-    for (const CVec& e : totalDegreeEndpoints(f.shape(), c0.data(), mixSeed(seed, 2))) set.add(e);
+    const std::vector<CVec> ends =
+        totalDegreeEndpoints(f.shape(), c0.data(), mixSeed(seed, 2), budget.counter());
+    if (budget.exceeded()) return overBudget();
+    for (const CVec& e : ends) set.add(e);
     out->total_degree_paths = static_cast<int>(bezout);
     out->total_degree_added = static_cast<int>(set.roots().size() - before);
     out->check = "monodromy+total-degree";
@@ -164,10 +187,13 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
     f.coefficients(q0.data(), d0.data());
     RootSet other(shape, d0.data());
     other.add(y0);
-    if (!other.roots().empty()) monodromy(f, shape, q0, mixSeed(seed, 4), other);
+    if (!other.roots().empty()) monodromy(f, shape, q0, mixSeed(seed, 4), other, budget);
+    if (budget.exceeded()) return overBudget();
     out->second_monodromy_roots = static_cast<int>(other.roots().size());
     const std::size_t before = set.roots().size();
-    for (const CVec& e : trackSegment(f, shape, q0, p0, other.roots())) set.add(e);
+    const std::vector<CVec> carried = trackSegment(f, shape, q0, p0, other.roots(), &budget);
+    if (budget.exceeded()) return overBudget();
+    for (const CVec& e : carried) set.add(e);
     out->second_monodromy_added = static_cast<int>(set.roots().size() - before);
     out->check = "monodromy+second-monodromy";
   }
@@ -177,15 +203,20 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
 
 }  // namespace detail
 
-const StartSystem* findStartSystem(const Family& f, bool compute) {
-  // One computation per signature for the process. The map's lock is not held while computing
-  // (a new signature's monodromy takes up to seconds): a thread asking for a signature being
-  // computed waits for that one only, the others go on (a batch's other lines). The cache keeps
-  // every start system for the process, so the pointers returned stay valid.
+namespace {
+
+// findStartSystem with the step budget of a computation (0: none). One computation per
+// signature for the process. The map's lock is not held while computing (a new signature's
+// monodromy takes up to seconds): a thread asking for a signature being computed waits for that
+// one only, the others go on (a batch's other lines). The cache keeps every start system for
+// the process, so the pointers returned stay valid. A family over the budget is remembered as
+// such (nullptr for the budgeted lookups), not cached: a lookup without a budget computes it.
+const StartSystem* lookUp(const Family& f, bool compute, std::uint64_t max_steps) {
   using Entry = std::shared_future<std::shared_ptr<const StartSystem>>;
   static std::mutex mutex;
   static std::map<std::string, Entry> cache;
-  static std::set<std::string> not_stored;  // looked up without computing: none stored
+  static std::set<std::string> not_stored;   // looked up without computing: none stored
+  static std::set<std::string> over_budget;  // computed with a budget: more paths needed
   const std::string signature = f.signature();
   std::unique_lock<std::mutex> lock(mutex);
   if (auto it = cache.find(signature); it != cache.end()) {
@@ -194,6 +225,7 @@ const StartSystem* findStartSystem(const Family& f, bool compute) {
     return entry.get().get();
   }
   if (!compute && not_stored.count(signature)) return nullptr;
+  if ((!compute || max_steps > 0) && over_budget.count(signature)) return nullptr;
   // The stored one first (deterministic: always preferred for its signature); a stored file
   // that fails its check against f is ignored and the start system computed.
   std::promise<std::shared_ptr<const StartSystem>> promise;
@@ -208,18 +240,38 @@ const StartSystem* findStartSystem(const Family& f, bool compute) {
   const Entry entry = promise.get_future().share();
   cache.emplace(signature, entry);
   lock.unlock();
+  std::unique_ptr<StartSystem> computed;
   try {
-    promise.set_value(detail::computeStartSystem(f, detail::kDefaultMaxBezout));
+    computed = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, max_steps);
   } catch (...) {
     promise.set_exception(std::current_exception());  // to those waiting for it
     lock.lock();
     cache.erase(signature);  // a later call tries again
     throw;
   }
+  if (computed->check == "over the step budget") {
+    lock.lock();
+    cache.erase(signature);
+    over_budget.insert(signature);
+    lock.unlock();
+    promise.set_value(nullptr);  // those waiting: none (startSystem asks again, unbudgeted)
+    return nullptr;
+  }
+  promise.set_value(std::move(computed));
   return entry.get().get();
 }
 
-const StartSystem& startSystem(const Family& f) { return *findStartSystem(f, true); }
+}  // namespace
+
+const StartSystem* findStartSystem(const Family& f, bool compute) {
+  return lookUp(f, compute, detail::kSolvingStepBudget);
+}
+
+const StartSystem& startSystem(const Family& f) {
+  // nullptr only after waiting for a budgeted computation that ran out: then computed here
+  const StartSystem* s = lookUp(f, true, 0);
+  return s ? *s : *lookUp(f, true, 0);
+}
 
 int preloadStoredStartSystems() {
   int loaded = 0;

@@ -11,10 +11,24 @@ namespace relpos::complete::detail {
 // The Bézout limit startSystem uses (and the generator of the stored start systems).
 inline constexpr std::uint64_t kDefaultMaxBezout = 4096;
 
+// The most predictor-corrector steps a start system computed while solving may take (monodromy
+// loops, the cross-check): at most about 8 s on this machine (a step of an 8-unknown family
+// with 300-600 terms costs about 13 µs; the random 2-4-constraint problems' families took
+// 60,000–180,000 steps, four points at six distances (160 roots) 160,000–450,000, one family
+// of a random 5-constraint problem over five million). A family needing
+// more — thousands of roots, or paths that crawl — is not computed while solving (its answer
+// would not be complete anyway: only a stored, trace-tested count proves that every root was
+// found, docs/spec.md §8.5); the charts answer. Counted in steps, not seconds, so that the same
+// problem gets the same answer on any machine.
+inline constexpr std::uint64_t kSolvingStepBudget = 600000;
+
 // Above max_bezout the count is cross-checked by a second monodromy instead.
 // seed (0: the signature's stable hash, what startSystem uses) picks the generic member and the
 // monodromy loops; another seed gives an independent computation of the same count.
+// max_steps (0: no limit): past it the computation stops, with no roots and check "over the
+// step budget".
 std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
-                                                std::uint64_t seed = 0);
+                                                std::uint64_t seed = 0,
+                                                std::uint64_t max_steps = 0);
 
 }  // namespace relpos::complete::detail

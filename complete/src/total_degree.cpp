@@ -18,7 +18,7 @@ std::uint64_t bezoutNumber(const CompiledShape& shape) {
 }
 
 std::vector<CVec> totalDegreeEndpoints(const SystemShape& shape, const Complex* coefficients,
-                                       std::uint64_t seed) {
+                                       std::uint64_t seed, std::int64_t* steps_left) {
   const CompiledShape target(shape);
   const int n = shape.variables;
   const std::vector<int>& degrees = target.equationDegrees();
@@ -63,6 +63,7 @@ std::vector<CVec> totalDegreeEndpoints(const SystemShape& shape, const Complex* 
     for (int k = 0; k < n; ++k)
       start[k] = std::polar(1.0, 6.283185307179586 * index[k] / degrees[k]);
     const PathEnd e = tracker.track(start);
+    if (steps_left && (*steps_left -= e.steps) < 0) return out;
     if (e.status == PathStatus::kFinite) out.push_back(e.x);
     for (int k = 0; k < n && ++index[k] == degrees[k]; ++k) index[k] = 0;  // next combination
   }

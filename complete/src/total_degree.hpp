@@ -14,7 +14,9 @@ std::uint64_t bezoutNumber(const CompiledShape& shape);
 
 // Every finite endpoint (polished, not yet deduplicated or certified) of the total-degree
 // homotopy to the member of `shape` with coefficients `coefficients`.
+// `steps_left` (when set): the predictor-corrector steps the paths may take; each path's are
+// taken from it, and past 0 the tracking stops (the endpoints then incomplete).
 std::vector<CVec> totalDegreeEndpoints(const SystemShape& shape, const Complex* coefficients,
-                                       std::uint64_t seed);
+                                       std::uint64_t seed, std::int64_t* steps_left = nullptr);
 
 }  // namespace relpos::complete::detail

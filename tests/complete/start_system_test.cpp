@@ -56,6 +56,17 @@ TEST(StartSystem, ThreadsAskingAtOnceShareOneComputation) {
   EXPECT_EQ(got[0]->roots.size(), 4u);  // Bézout
 }
 
+// A computation over its step budget stops with no roots (a solve then leaves the family to
+// the charts); the same family with budget enough has all its roots.
+TEST(StartSystem, AComputationOverItsPathBudgetStopsWithNoRoots) {
+  const testing::DenseFamily f(2, 3);
+  const auto over = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 10);
+  EXPECT_EQ(over->check, "over the step budget");
+  EXPECT_TRUE(over->roots.empty());
+  const auto within = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 1000000);
+  EXPECT_EQ(within->roots.size(), 9u);  // Bézout
+}
+
 TEST(StartSystem, StewartGoughHasFortyRoots) {
   const testing::StewartFamily f;
   const auto t0 = std::chrono::steady_clock::now();

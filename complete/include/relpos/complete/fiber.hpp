@@ -43,7 +43,9 @@ struct StartSystem {
 // kept for the process; thread-safe.
 const StartSystem& startSystem(const Family& f);
 // The same, or nullptr when none is stored and `compute` is false (added for issue 15's stage
-// options: a solve that must not spend seconds computing a start system).
+// options: a solve that must not spend seconds computing a start system), or when computing
+// it would take more tracking steps than a solve may (detail::kSolvingStepBudget, issue 16: a
+// family of thousands of roots or crawling paths; startSystem computes it whatever it costs).
 const StartSystem* findStartSystem(const Family& f, bool compute);
 // Loads every stored start system now (each checked against its family, as on first use), so
 // that the first solve of a family pays no loading: for a control loop's start-up, and for
