@@ -217,7 +217,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   }
   const std::size_t quota = std::max<std::size_t>(
       1, (static_cast<std::size_t>(std::max(options.max_charts, 0)) + systems.size() - 1) /
-             systems.size());
+             std::max<std::size_t>(systems.size(), 1));
   // The descents from starts [first, last) of every alternative (the same starts for each,
   // whatever the constraints' order), a chart about each pose found that no chart holds yet.
   auto search = [&](int first, int last) {

@@ -10,6 +10,7 @@
 #include "start_system.hpp"
 
 #include <future>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -74,7 +75,6 @@ class RootSet {
   std::vector<double> radii_;
 };
 
-// Endpoints at p_to of the paths from `starts` at p_from (straight segment: both generic).
 // The predictor-corrector steps a computation may still take (unlimited unless `limited`).
 struct StepBudget {
   std::int64_t left = 0;
@@ -83,6 +83,7 @@ struct StepBudget {
   bool exceeded() const { return limited && left < 0; }
 };
 
+// Endpoints at p_to of the paths from `starts` at p_from (straight segment: both generic).
 // `budget` (when set): each path's steps taken from it; past it the tracking stops.
 std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& shape,
                                const std::vector<Complex>& p_from, const std::vector<Complex>& p_to,
@@ -142,7 +143,8 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
   auto out = std::make_unique<StartSystem>();
   StepBudget budget;
   budget.limited = max_steps > 0;
-  budget.left = static_cast<std::int64_t>(std::min<std::uint64_t>(max_steps, INT64_MAX));
+  budget.left = static_cast<std::int64_t>(
+      std::min<std::uint64_t>(max_steps, std::numeric_limits<std::int64_t>::max()));
   auto overBudget = [&] {
     out->roots.clear();
     out->check = "over the step budget";
@@ -216,7 +218,7 @@ const StartSystem* lookUp(const Family& f, bool compute, std::uint64_t max_steps
   static std::mutex mutex;
   static std::map<std::string, Entry> cache;
   static std::set<std::string> not_stored;   // looked up without computing: none stored
-  static std::set<std::string> over_budget;  // computed with a budget: more paths needed
+  static std::set<std::string> over_budget;  // computed with a budget: more steps needed
   const std::string signature = f.signature();
   std::unique_lock<std::mutex> lock(mutex);
   if (auto it = cache.find(signature); it != cache.end()) {
