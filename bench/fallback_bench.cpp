@@ -11,7 +11,6 @@
 #include <chrono>
 #include <vector>
 
-#include "random_problems.hpp"
 #include "ranged_problems.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
@@ -24,23 +23,9 @@ using relpos::Problem;
 // The random problems, those the rules leave (`left`) or answer.
 std::vector<Problem> randomProblems(bool left) {
   relpos::test::Rng rng(2016);
-  const auto& kinds = relpos::test::singleKinds();
   std::vector<Problem> out;
   for (int i = 0; i < 600; ++i) {
-    const bool grid = i % 2 == 1;
-    relpos::test::KnownProblem kp = relpos::test::emptyKnownProblem(rng, grid);
-    const int n = rng.integer(2, 4);
-    relpos::NamedFeature previous;
-    for (int k = 0; k < n; ++k) {
-      const relpos::test::SingleKind& kind =
-          kinds[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kinds.size()) - 1))];
-      const bool share = k > 0 && rng.integer(0, 2) == 0;
-      relpos::test::addConstraint(kp, kind, rng, grid, share ? &previous : nullptr);
-      previous = kp.problem.mobile.features.back();
-      if (rng.integer(0, 1) == 1)
-        relpos::test::widenToRange(kp.problem.constraints.back(), kind, rng, rng.integer(0, 2));
-    }
-    kp.problem.mobile.pose = rng.pose();
+    const relpos::test::KnownProblem kp = relpos::test::randomRangedProblem(rng, i % 2 == 1);
     const relpos::Solution rules = relpos::solve(kp.problem, relpos::test::rulesOnlyRegistry());
     if ((rules.status == relpos::Status::kUnhandled) != left) continue;
     relpos::solve(kp.problem, relpos::builtinRegistry());  // start systems computed here

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "random_problems.hpp"
 #include "ranged_problems.hpp"
 #include "spec_writer.hpp"
 
@@ -19,22 +18,8 @@ int main(int argc, char** argv) {
   }
   const long count = std::strtol(argv[1], nullptr, 10);
   relpos::test::Rng rng(std::strtoull(argv[2], nullptr, 10));
-  const auto& kinds = relpos::test::singleKinds();
   for (long i = 0; i < count; ++i) {
-    const bool grid = i % 2 == 1;
-    relpos::test::KnownProblem kp = relpos::test::emptyKnownProblem(rng, grid);
-    const int n = rng.integer(2, 4);
-    relpos::NamedFeature previous;
-    for (int k = 0; k < n; ++k) {
-      const relpos::test::SingleKind& kind =
-          kinds[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kinds.size()) - 1))];
-      const bool share = k > 0 && rng.integer(0, 2) == 0;
-      relpos::test::addConstraint(kp, kind, rng, grid, share ? &previous : nullptr);
-      previous = kp.problem.mobile.features.back();
-      if (rng.integer(0, 1) == 1)
-        relpos::test::widenToRange(kp.problem.constraints.back(), kind, rng, rng.integer(0, 2));
-    }
-    kp.problem.mobile.pose = rng.pose();
+    relpos::test::KnownProblem kp = relpos::test::randomRangedProblem(rng, i % 2 == 1);
     kp.problem.name = "random-" + std::to_string(i);
     std::printf("%s\n", relpos::test::specJson(kp.problem).c_str());
   }

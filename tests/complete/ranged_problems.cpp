@@ -37,4 +37,22 @@ KnownProblem rangedProblem(Rng& rng, int index) {
   return kp;
 }
 
+KnownProblem randomRangedProblem(Rng& rng, bool grid) {
+  const auto& kinds = singleKinds();
+  KnownProblem kp = emptyKnownProblem(rng, grid);
+  const int n = rng.integer(2, 4);
+  NamedFeature previous;
+  for (int k = 0; k < n; ++k) {
+    const SingleKind& kind =
+        kinds[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kinds.size()) - 1))];
+    const bool share = k > 0 && rng.integer(0, 2) == 0;
+    addConstraint(kp, kind, rng, grid, share ? &previous : nullptr);
+    previous = kp.problem.mobile.features.back();
+    if (rng.integer(0, 1) == 1)
+      widenToRange(kp.problem.constraints.back(), kind, rng, rng.integer(0, 2));
+  }
+  kp.problem.mobile.pose = rng.pose();
+  return kp;
+}
+
 }  // namespace relpos::test
