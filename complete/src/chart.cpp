@@ -9,8 +9,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-// A singular value under this fraction of the largest: the equations are dependent there.
-constexpr double kRankGap = 1e-7;
 
 // g for an inequality, g − target for an equation (its residual).
 template <typename T>
@@ -221,7 +219,7 @@ bool holdAtExactBase(const Chart& c, const std::vector<Condition>& extra,
   }
   if (proven) {
     proven->clear();
-    for (const FI& v : value) proven->push_back(std::max(-v.lower(), v.upper()));
+    for (const FI& v : value) proven->push_back(mag(v));
   }
   return true;
 }

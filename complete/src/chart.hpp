@@ -17,6 +17,10 @@ namespace relpos::complete::detail {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
+// A singular value under this fraction of the largest: the equations are dependent there (no
+// chart; the dependent ones' reduction, dependent_equations.hpp, uses the same gap).
+inline constexpr double kRankGap = 1e-7;
+
 struct Chart {
   Matrix3d R0 = Matrix3d::Identity();  // the base pose, normalised (pose_conditions.hpp)
   Vector3d t0 = Vector3d::Zero();

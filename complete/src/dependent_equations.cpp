@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "chart.hpp"
 #include "implied_equations.hpp"
 
 namespace relpos::complete::detail {
@@ -28,9 +29,6 @@ bool extendsSpan(const Vector3d& v, double gap, std::vector<Vector3d>* basis) {
   basis->push_back(r.normalized());
   return true;
 }
-
-// The rank gap of the charts (chart.cpp): an angle equation independent of the others there.
-constexpr double kRankGap = 1e-7;
 
 // A vector within this of a span (relative to its length) is in it: the structure of the
 // decompositions (the same vectors, their cross products), not a coincidence of the pose.
@@ -391,20 +389,27 @@ bool nextChoice(std::vector<std::size_t>* drop, std::size_t n) {
 // The most choices of which dependent equations to drop tried (C(8, 4) = 70, C(10, 5) = 252).
 constexpr int kMostChoices = 256;
 
+// Every equation's gradient in the coordinates about the base pose (R0, t0).
+std::vector<Vector6d> gradientsAt(const ConditionSystem& system, const Matrix3d& R0,
+                                  const Vector3d& t0) {
+  std::array<Dual<double>, 6> y;
+  for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
+  const LocalPose<Dual<double>> X(y);
+  std::vector<Vector6d> rows(system.equations.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Dual<double> g = evaluate(inBaseFrame(system.equations[i], R0, t0), X);
+    for (int j = 0; j < 6; ++j) rows[i][j] = g.g[j];
+  }
+  return rows;
+}
+
 }  // namespace
 
 bool reduceDependent(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
                      ConditionSystem* reduced, std::vector<Condition>* dropped) {
   dropped->clear();
-  std::array<Dual<double>, 6> y;
-  for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
-  const LocalPose<Dual<double>> X(y);
   const std::size_t n = system.equations.size();
-  std::vector<Vector6d> rows(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Dual<double> g = evaluate(inBaseFrame(system.equations[i], R0, t0), X);
-    for (int j = 0; j < 6; ++j) rows[i][j] = g.g[j];
-  }
+  const std::vector<Vector6d> rows = gradientsAt(system, R0, t0);
   // the equations independent at the base (greedily, in their canonical order): the linear
   // ones first — what pins directions and points — then the others, which read them
   std::vector<Vector6d> basis;
@@ -457,15 +462,9 @@ SourceMask dependentSources(const ConditionSystem& system, const Matrix3d& R0,
                             const Vector3d& t0) {
   const auto n = static_cast<Eigen::Index>(system.equations.size());
   if (n == 0) return 0;
-  std::array<Dual<double>, 6> y;
-  for (int i = 0; i < 6; ++i) y[i] = Dual<double>::variable(0.0, i);
-  const LocalPose<Dual<double>> X(y);
+  const std::vector<Vector6d> rows = gradientsAt(system, R0, t0);
   Eigen::MatrixXd J(n, 6);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Dual<double> g =
-        evaluate(inBaseFrame(system.equations[static_cast<std::size_t>(i)], R0, t0), X);
-    for (int j = 0; j < 6; ++j) J(i, j) = g.g[j];
-  }
+  for (Eigen::Index i = 0; i < n; ++i) J.row(i) = rows[static_cast<std::size_t>(i)].transpose();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU);
   const Eigen::VectorXd& sv = svd.singularValues();
   if (!(sv.size() > 0 && sv[0] > 0.0)) return 0;

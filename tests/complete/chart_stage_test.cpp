@@ -404,9 +404,12 @@ TEST(ChartStage, ConstraintsRepeatingWhatAnotherPinsGiveItsSet) {
     }
 }
 
-// Five points on integer geometry (a problem of the random sweeps): two of them, on a fixed
-// plane and on a fixed line, meet tangentially at every pose found, so no chart is proven; the
-// message names those two (what to restate), not the others.
+// Five points on integer geometry (a problem of the random sweeps). Two of them, m2 on the plane
+// z = 2 and m3 on a line at z = −2 (the fixed object's frame), are 4 apart on the mobile
+// object: only with m3 − m2 turned
+// straight down do both hold, a tangency of the sphere about m2 and the gap of 4 — singular at
+// every pose found, so no chart is proven, and the message names those two constraints (what
+// to restate), not the others.
 TEST(ChartStage, SingularPosesNameTheConstraintsDependentThere) {
   const std::string text =
       R"({"relpos":1,"name":"tangent-points","units":{"angle":"rad"},"fixed":{"name":"base","pose":)"

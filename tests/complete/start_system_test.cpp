@@ -58,7 +58,7 @@ TEST(StartSystem, ThreadsAskingAtOnceShareOneComputation) {
 
 // A computation over its step budget stops with no roots (a solve then leaves the family to
 // the charts); the same family with budget enough has all its roots.
-TEST(StartSystem, AComputationOverItsPathBudgetStopsWithNoRoots) {
+TEST(StartSystem, AComputationOverItsStepBudgetStopsWithNoRoots) {
   const testing::DenseFamily f(2, 3);
   const auto over = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 10);
   EXPECT_EQ(over->check, "over the step budget");
