@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "chart.hpp"
 
@@ -23,10 +24,12 @@ constexpr double kStationary = 1e-9;
 constexpr double kProgress = 1e-3;
 constexpr int kSlowSteps = 8;
 
+// The least-squares cost Σ r² and, with the Jacobian, its normal equations JᵀJ and Jᵀr,
+// accumulated row by row (no matrix of all the rows: a handful of rows, products of fixed size).
 struct Residuals {
-  Eigen::VectorXd r;
-  Eigen::MatrixXd J;
   double cost = 0.0;
+  Matrix6d JtJ = Matrix6d::Zero();
+  Vector6d Jtr = Vector6d::Zero();
 };
 
 double innerLo(const Condition& c, double shrink) {
@@ -38,32 +41,44 @@ double innerHi(const Condition& c, double shrink) {
   return std::isfinite(c.lo) ? c.hi - shrink * (c.hi - c.lo) : c.hi - kOneSidedPerShrink * shrink;
 }
 
-// The residuals at coordinates y about (R0, t0), the conditions already in that base frame.
+double valueOf(double g) { return g; }
+double valueOf(const Dual<double>& g) { return g.v; }
+
+// The residuals at coordinates y about (R0, t0), the conditions already in that base frame:
+// T = Dual<double> with the Jacobian (always at the base, y = 0), double without (a trial
+// step's cost: a third of the descent's evaluations, at a fraction of the derivatives' price).
+template <typename T>
 void residuals(const std::vector<Condition>& eq, const std::vector<Condition>& in,
-               const Vector6d& y, bool with_jacobian, double shrink, Residuals* out) {
-  std::array<Dual<double>, 6> yd;
-  for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
-  const LocalPose<Dual<double>> X(yd);
-  const auto n = static_cast<Eigen::Index>(eq.size() + in.size());
-  out->r.setZero(n);
-  if (with_jacobian) out->J.setZero(n, 6);
-  Eigen::Index row = 0;
-  auto put = [&](const Dual<double>& g, double excess) {
-    out->r[row] = excess;
-    if (with_jacobian && excess != 0.0)
-      for (int j = 0; j < 6; ++j) out->J(row, j) = g.g[j];
-    ++row;
+               const Vector6d& y, double shrink, Residuals* out) {
+  constexpr bool kJacobian = !std::is_same_v<T, double>;
+  const LocalPose<T> X = [&] {
+    if constexpr (kJacobian) {
+      return LocalPose<T>(typename LocalPose<T>::AtBase{});
+    } else {
+      std::array<double, 6> yv;
+      for (int i = 0; i < 6; ++i) yv[i] = y[i];
+      return LocalPose<T>(yv);
+    }
+  }();
+  *out = Residuals{};
+  auto put = [&](const T& g, double excess) {
+    out->cost += excess * excess;
+    if constexpr (kJacobian) {
+      if (excess == 0.0) return;
+      const Vector6d row = Eigen::Map<const Vector6d>(g.g.data());
+      out->JtJ.noalias() += row * row.transpose();
+      out->Jtr += excess * row;
+    }
   };
   for (const Condition& c : eq) {
-    const Dual<double> g = evaluate(c, X);
-    put(g, g.v - c.lo);
+    const T g = evaluate(c, X);
+    put(g, valueOf(g) - c.lo);
   }
   for (const Condition& c : in) {
-    const Dual<double> g = evaluate(c, X);
-    const double lo = innerLo(c, shrink), hi = innerHi(c, shrink);
-    put(g, g.v < lo ? g.v - lo : (g.v > hi ? g.v - hi : 0.0));
+    const T g = evaluate(c, X);
+    const double v = valueOf(g), lo = innerLo(c, shrink), hi = innerHi(c, shrink);
+    put(g, v < lo ? v - lo : (v > hi ? v - hi : 0.0));
   }
-  out->cost = out->r.squaredNorm();
 }
 
 bool holds(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t,
@@ -95,12 +110,12 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
   auto rebase = [&] {
     inBaseFrame(s.equations, *R, *t, &eq);
     inBaseFrame(s.inequalities, *R, *t, &in);
-    residuals(eq, in, Vector6d::Zero(), true, shrink, &cur);
+    residuals<Dual<double>>(eq, in, Vector6d::Zero(), shrink, &cur);
   };
   rebase();
   for (int it = 0; it < 200 && cur.cost > 1e-30; ++it) {
-    const Matrix6d JtJ = cur.J.transpose() * cur.J;
-    const Vector6d g = cur.J.transpose() * cur.r;
+    const Matrix6d& JtJ = cur.JtJ;
+    const Vector6d& g = cur.Jtr;
     Matrix6d A = JtJ;
     A.diagonal().array() += lambda * (1.0 + JtJ.diagonal().array());
     const Vector6d step = -A.ldlt().solve(g);
@@ -108,7 +123,7 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
     // a stationary point of a positive cost (no pose near, or a local minimum): stop there
     if (g.norm() <= kStationary * std::sqrt(cur.cost) * (1.0 + std::sqrt(JtJ.diagonal().sum())))
       return;
-    residuals(eq, in, step, false, shrink, &trial);
+    residuals<double>(eq, in, step, shrink, &trial);
     if (trial.cost < cur.cost) {
       slow = trial.cost > (1.0 - kProgress) * cur.cost ? slow + 1 : 0;
       if (slow >= kSlowSteps) return;

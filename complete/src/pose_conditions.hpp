@@ -125,18 +125,32 @@ struct LocalPose {
     const T& c = y[2];
     const T a2 = square(a), b2 = square(b), c2 = square(c);
     const T one = lift<T>(1.0);
-    const T n = one + a2 + b2 + c2;
+    // One division, then products: the forward derivatives' division costs six quotients, and
+    // this runs for every residual of the descent and every Newton step of a chart's pose.
+    const T inv = one / (one + a2 + b2 + c2);
+    const T inv2 = inv * 2.0;
     const T ab = a * b, ac = a * c, bc = b * c;
-    Q[0] = (one + a2 - b2 - c2) / n;
-    Q[1] = (ab - c) * 2.0 / n;
-    Q[2] = (ac + b) * 2.0 / n;
-    Q[3] = (ab + c) * 2.0 / n;
-    Q[4] = (one - a2 + b2 - c2) / n;
-    Q[5] = (bc - a) * 2.0 / n;
-    Q[6] = (ac - b) * 2.0 / n;
-    Q[7] = (bc + a) * 2.0 / n;
-    Q[8] = (one - a2 - b2 + c2) / n;
+    Q[0] = (one + a2 - b2 - c2) * inv;
+    Q[1] = (ab - c) * inv2;
+    Q[2] = (ac + b) * inv2;
+    Q[3] = (ab + c) * inv2;
+    Q[4] = (one - a2 + b2 - c2) * inv;
+    Q[5] = (bc - a) * inv2;
+    Q[6] = (ac - b) * inv2;
+    Q[7] = (bc + a) * inv2;
+    Q[8] = (one - a2 - b2 + c2) * inv;
     t = {y[3], y[4], y[5]};
+  }
+  // The base pose y = 0 with its first derivatives, T a forward dual of doubles: Q = I,
+  // ∂Q/∂(a, b, c) = 2[e_a,b,c]×, ∂t/∂τ = I — what the constructor computes there, without its
+  // arithmetic (the descent takes every Jacobian at its current base).
+  struct AtBase {};
+  explicit LocalPose(AtBase) {
+    for (T& q : Q) q = lift<T>(0.0);
+    Q[0] = Q[4] = Q[8] = lift<T>(1.0);
+    Q[1].g[2] = -2.0, Q[2].g[1] = 2.0, Q[3].g[2] = 2.0;
+    Q[5].g[0] = -2.0, Q[6].g[1] = -2.0, Q[7].g[0] = 2.0;
+    t = {T::variable(0.0, 3), T::variable(0.0, 4), T::variable(0.0, 5)};
   }
   V3<T> rotate(const std::array<double, 3>& v) const {
     V3<T> r;
