@@ -46,6 +46,10 @@ int sPlusMinus(const Vector3d& u, const Vector3d& v, double a, double b, const T
   // tangent direction by no more than the inputs.
   if (ct2 <= 4 * (tol.angle * tol.angle + e)) {
     s[0] = base.normalized();
+    // The exact meetings are base ± sqrt(ct2') w, ct2' within 2 e of ct2: each as far from the
+    // one direction as that root (measured: meetings 3.2e-4 rad from it where the bound above
+    // said 2.2e-4, and the pair was then found incompatible at a pose that meets both).
+    *err = std::max(*err, e + std::sqrt(std::max(ct2, 0.0) + 2.0 * e));
     return 1;
   }
   const double ct = std::sqrt(ct2);

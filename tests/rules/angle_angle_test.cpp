@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "relpos/plugins/conformance.hpp"
 #include "rule_kit.hpp"
 
 namespace relpos::test {
@@ -67,6 +68,35 @@ TEST(AngleAngle, AParallelismAndAnAngleTurnAboutTheParallelAxis) {
     EXPECT_TRUE(satisfiesAnAlternative(out, X)) << phi;
   }
   EXPECT_FALSE(satisfiesAnAlternative(out, poseOf({1, 2, 3}, 45 * kDeg, Vector3d::UnitX())));
+}
+
+// A parallelism derived by earlier rules (known to 2.5e-8 rad) and an angle whose cone barely
+// meets the parallel vector's: the two meetings, 6.4e-4 rad apart, are within what the inputs'
+// uncertainty allows of one tangent direction, which the rule gives instead. The rotations that
+// meet both are then off that direction by half the meetings' distance, and the answer's
+// uncertainty (err) must say so: a later comparison within it found the task inconsistent where
+// a pose met every constraint (random 5-constraint problem, issue 16).
+TEST(AngleAngle, ATangentMeetingOfUncertainConesCarriesTheMeetingsDistance) {
+  const Vector3d x = Vector3d::UnitX();
+  const Vector3d v(0.5, std::sqrt(0.75), 0.0);         // 60° from x
+  const Vector3d m(std::sqrt(0.75), 0.5, 0.0);         // the mobile vector, 30° from x
+  const double beta = 30 * kDeg + 1.75e-7;             // cones 60° apart, 30° and 30° + δ wide
+  Fundamental parallel = Fundamental::angle(x, x, 0.0, 1);
+  parallel.err = 2.5e-8;
+  const Fundamental angle = Fundamental::angle(m, v, beta, 2);
+  std::string fired;
+  const RuleOutput out = applyRule("angle+angle", {parallel, angle}, &fired);
+  ASSERT_EQ(fired, "angle+angle/parallel-and-angle");
+  ASSERT_EQ(out.alternatives.size(), 1u);  // one tangent direction
+  // The exact rotations: about x by ±φ, R·m = (cos 30°, ½ cos φ, ½ sin φ) at β from v.
+  const double phi = std::acos((std::cos(beta) - 0.5 * std::sqrt(0.75)) / (0.5 * std::sqrt(0.75)));
+  ASSERT_GT(phi, 5e-4);
+  for (double sign : {1.0, -1.0}) {
+    const Isometry3d X = poseOf({0, 0, 0}, sign * phi, x);
+    ASSERT_NEAR(std::acos((X.linear() * m).dot(v)), beta, 1e-12);
+    for (const Fundamental& f : out.alternatives[0])
+      EXPECT_LE(plugins::fundamentalResidual(f, X), f.err + 1e-12) << sign;
+  }
 }
 
 }  // namespace

@@ -23,9 +23,13 @@ std::vector<Fundamental> fundamentalsOf(const Problem& p) {
 
 RuleOutput applyRule(const std::string& family, const Problem& p, std::string* case_name,
                      const Tolerance& tol) {
+  return applyRule(family, fundamentalsOf(p), case_name, tol);
+}
+
+RuleOutput applyRule(const std::string& family, const std::vector<Fundamental>& fs,
+                     std::string* case_name, const Tolerance& tol) {
   RuleOutput out;
   case_name->clear();
-  const std::vector<Fundamental> fs = fundamentalsOf(p);
   EXPECT_GE(fs.size(), 2u);
   if (fs.size() < 2) return out;
   for (const RuleInfo& rule : builtinRegistry().rules()) {

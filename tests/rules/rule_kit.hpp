@@ -20,6 +20,9 @@ std::vector<Fundamental> fundamentalsOf(const Problem& p);
 // none did).
 RuleOutput applyRule(const std::string& family, const Problem& p, std::string* case_name,
                      const Tolerance& tol = Tolerance{});
+// The same on given fundamentals (the first two): derived ones, with their uncertainty (err).
+RuleOutput applyRule(const std::string& family, const std::vector<Fundamental>& fs,
+                     std::string* case_name, const Tolerance& tol = Tolerance{});
 
 // Whether X_WM satisfies every input constraint of p by the evaluator (within 1e-9).
 bool satisfiesInputs(const Problem& p, const Isometry3d& X_WM);
