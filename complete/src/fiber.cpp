@@ -70,8 +70,7 @@ FiberResult solveFiber(const Family& f, const std::vector<double>& target,
     result.attempts = attempt + 1;
     const bool careful = attempt == 1;
     if (attempt > 1) std::fill(redo.begin(), redo.end(), 1);
-    const Complex gamma =
-        detail::randomGamma(detail::mixSeed(options.seed, careful ? 0 : attempt));
+    const Complex gamma = detail::randomGamma(detail::mixSeed(options.seed, careful ? 0 : attempt));
     detail::TrackerOptions tracking;
     if (careful) {
       tracking.initial_step *= 0.1;
