@@ -9,8 +9,8 @@
 #include "branch_check.hpp"
 #include "centring.hpp"
 #include "fallback.hpp"
-#include "unmatched_hint.hpp"
 #include "relpos/core/branch_sink.hpp"
+#include "unmatched_hint.hpp"
 
 namespace relpos {
 
@@ -679,8 +679,11 @@ Params sampleParameters(const Manifold& m, const Params& centre, double window,
   Params t{};
   for (int i = 0; i < m.dof(); ++i) {
     const Parameter p = m.parameter(i);
-    const double lo = std::isfinite(p.min) ? p.min : centre[i] - window;
-    const double hi = std::isfinite(p.max) ? p.max : centre[i] + window;
+    // The window about the centre moved into the bounds: a centre beyond a finite bound of a
+    // half-unbounded parameter (distance ≤ −7e5, centre 0) would otherwise make lo > hi.
+    const double c = std::min(std::max(centre[i], p.min), p.max);
+    const double lo = std::isfinite(p.min) ? p.min : c - window;
+    const double hi = std::isfinite(p.max) ? p.max : c + window;
     t[i] = std::uniform_real_distribution<double>(lo, hi)(rng);
   }
   return t;

@@ -56,7 +56,8 @@ struct NearestPose {
 NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial);
 
 // Parameters drawn uniformly within the manifold's bounds; an unbounded one within ±window of
-// centre's (docs/spec.md §2 `samples`: centre = the nearest pose's parameters).
+// centre's (docs/spec.md §2 `samples`: centre = the nearest pose's parameters), the centre taken
+// within the bounds first (a half-unbounded parameter's window then never leaves them).
 Params sampleParameters(const Manifold& m, const Params& centre, double window,
                         std::mt19937_64& rng);
 
