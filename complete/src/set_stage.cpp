@@ -2,6 +2,7 @@
 // by local descent from many starts and answered with certified charts (docs/spec.md §8.7).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "chart_manifold.hpp"
@@ -220,8 +221,18 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
     detail::dropImpliedEquations(&alt.s, tol.length / alt.s.frame.scale, tol.angle, &alt.implied);
     // equations said twice may be apart by the rounding of a far-placed problem: a pose meeting
     // them to a thousandth of the tolerance is found (the chart's proof then takes the exact one)
-    alt.slack.length = std::max(alt.slack.length, 1e-3 * tol.length / alt.s.frame.scale);
+    // — and never less than two ulps of the coordinates as placed: a thousandth of a tolerance
+    // that is itself 64 ulps (a problem placed 1e6 from its origin) is below their rounding
+    alt.slack.length = std::max({alt.slack.length, 1e-3 * tol.length / alt.s.frame.scale,
+                                 2.0 * std::numeric_limits<double>::epsilon() *
+                                     detail::largestMagnitude(problem) / alt.s.frame.scale});
     alt.slack.angle = std::max(alt.slack.angle, 1e-3 * tol.angle);
+    // ... and the rounding of far-placed positions, where equations couple them to the turn,
+    // leaves angles apart by as much (normalised lengths are about 1: a turn by δ moves a point
+    // by about δ). Measured, the world moved 1e6: a point-plane offset left 1.4e-11 from its
+    // value (allowed 7e-12), a cosine 1.9e-12 (allowed 1e-12); every start declined, where the
+    // problem as given was solved.
+    alt.slack.angle = std::max(alt.slack.angle, alt.slack.length);
   }
   const std::size_t quota = std::max<std::size_t>(
       1, (static_cast<std::size_t>(std::max(options.max_charts, 0)) + systems.size() - 1) /
