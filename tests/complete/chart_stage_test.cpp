@@ -17,6 +17,8 @@
 #include "dependent_equations.hpp"
 #include "relpos/complete/stage.hpp"
 #include "relpos/io/spec_reader.hpp"
+#include "result_checker.hpp"
+#include "test_config.hpp"
 #include "solve_helpers.hpp"
 
 namespace relpos::test {
@@ -111,6 +113,27 @@ TEST(ChartStage, MovedTurnedAndScaledCopiesGiveTheSameCharts) {
               differing);
   EXPECT_GT(compared, 100);
   EXPECT_LE(differing * 4, compared);
+}
+
+// data/regressions/far-placed-numeric-stage-slack.json: an isolated pose the numeric stage
+// charts, and every copy of it moved 1e6 away or scaled is charted too. Moved, the descents ended
+// 1.4e-11 from an offset's value, the coordinates' rounding, where only a thousandth of the
+// tolerance (7e-12) was accepted: three of the six copies went unanswered.
+TEST(ChartStage, AFarPlacedCopyIsChartedToo) {
+  const ParseResult r = parseSpecFile(
+      RELPOS_DATA_DIR "/regressions/far-placed-numeric-stage-slack.json", builtinRegistry());
+  ASSERT_TRUE(r.problem.has_value());
+  for (const ProblemTransform& t : invarianceTransforms()) {
+    SCOPED_TRACE(t.label);
+    const Problem p = t.apply(*r.problem);
+    const Solution s = solve(p, builtinRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    for (const Branch& b : s.branches) {
+      EXPECT_FALSE(b.exact);  // the numeric stage's, as the problem as given is
+      EXPECT_EQ(b.manifold->dof(), 0);
+      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
+    }
+  }
 }
 
 // Same input, same output: solving twice gives the same charts, to the last bit.
