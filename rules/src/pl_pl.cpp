@@ -85,11 +85,22 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     const double k1 = (db * db + p * p - q * q) / (2 * db);
     const double k2sq = p * p - k1 * k1;
     out.fire(kParallelCylinders);
-    // Tangent cylinders: k2 ~ sqrt(2 r δ) for a δ of the length tolerance (k2sq is a length²).
-    if (k2sq <= 2 * tol.length * std::max(p, q)) return one(out, onLine(a, x0 + k1 * u_b, a.d, 0));
+    // With p, q and db each known to the tolerance δ, k2² moves by up to 2·spread (its
+    // derivatives in them), so the meetings by up to rootErr(2·spread, k2) (twice the first
+    // order: k2 − sqrt(k2² − x) ≤ x / k2 for x ≤ k2²): nearly tangent cylinders magnify it by
+    // 1/k2 (measured: radii 3 and 2, axes 1 + 3e-7 apart, moved 1e6 away: a line 3e-7 off, read
+    // as exact, and a point on it and on another line was found on lines that do not meet).
+    const double spread =
+        tol.length * (std::abs(p * (db - k1)) + std::abs(k1 * q) + std::abs(k1 * (db - k1))) / db;
+    // Tangent cylinders: k2 ~ sqrt(2 r δ) for a δ of the length tolerance (k2sq is a length²);
+    // the one line stands for meetings up to sqrt(k2² + 2 spread) either side of it.
+    if (k2sq <= 2 * tol.length * std::max(p, q))
+      return one(out, withErr(onLine(a, x0 + k1 * u_b, a.d, 0),
+                              std::sqrt(std::max(k2sq, 0.0) + 2.0 * spread)));
     const double k2 = std::sqrt(k2sq);
-    one(out, onLine(a, x0 + k1 * u_b + k2 * v_b, a.d, 0));
-    one(out, onLine(a, x0 + k1 * u_b - k2 * v_b, a.d, 0));
+    const double err = rootErr(2.0 * spread, k2);
+    one(out, withErr(onLine(a, x0 + k1 * u_b + k2 * v_b, a.d, 0), err));
+    one(out, withErr(onLine(a, x0 + k1 * u_b - k2 * v_b, a.d, 0), err));
     return;
   }
   Vector3d f1, f2;

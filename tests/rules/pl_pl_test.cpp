@@ -43,5 +43,44 @@ TEST(PlPl, DistinctParallelLinesAreIncompatible) {
   EXPECT_EQ(out.verdict, RuleVerdict::kIncompatible);
 }
 
+// One point 3 from the z axis and 2 from a parallel axis 1 + 3e-7 away: the cylinders barely
+// cross, at (k1, ±k2) with k2 = 1.9e-3. With the axes' distance and the radii each known only to
+// the tolerance (1.2e-8, a problem placed 1e6 from its origin), the crossings move by 1e-4: each
+// line the rule gives must carry that (it said exact, and a point on such a line and on another
+// through the true crossing was then found on lines that do not meet).
+TEST(PlPl, NearlyTangentCylindersCarryWhereTheirCrossingsMayBe) {
+  const double db = 1.0 + 3e-7, p = 3.0, q = 2.0;
+  Tolerance tol;
+  tol.length = 1.2e-8;
+  const Fundamental a = Fundamental::pointLine(Side::kMobile, Vector3d::Zero(), Vector3d::Zero(),
+                                               Vector3d::UnitZ(), p, 1);
+  const Fundamental b = Fundamental::pointLine(Side::kMobile, Vector3d::Zero(), Vector3d(db, 0, 0),
+                                               Vector3d::UnitZ(), q, 2);
+  std::string fired;
+  const RuleOutput out = applyRule("pl+pl", {a, b}, &fired, tol);
+  ASSERT_EQ(fired, "pl+pl/parallel-cylinders");
+  ASSERT_EQ(out.alternatives.size(), 2u);
+  // The crossings of the cylinders the inputs may stand for (each off by the tolerance).
+  for (double sd : {-1.0, 1.0})
+    for (double sp : {-1.0, 1.0})
+      for (double sq : {-1.0, 1.0}) {
+        const long double D = db + sd * tol.length, P = p + sp * tol.length,
+                          Q = q + sq * tol.length;
+        const long double k1 = (D * D + P * P - Q * Q) / (2 * D);
+        const long double k2 = std::sqrt(std::max<long double>(P * P - k1 * k1, 0));
+        for (double side : {-1.0, 1.0}) {
+          const Vector3d x(static_cast<double>(k1), static_cast<double>(side * k2), 0.0);
+          double nearest = 1e9;  // from the crossing to the rule's lines, less their uncertainty
+          for (const auto& alt : out.alternatives)
+            for (const Fundamental& f : alt) {
+              const Vector3d off = x - f.q;
+              const double d = (off - off.dot(f.d) * f.d).norm();
+              nearest = std::min(nearest, d - f.value() - f.err);
+            }
+          EXPECT_LE(nearest, 1e-12) << sd << sp << sq << side;
+        }
+      }
+}
+
 }  // namespace
 }  // namespace relpos::test
