@@ -1,9 +1,10 @@
 // startSystem: the roots of one generic complex member per signature, by monodromy (Duff et al.
 // 2019): from the seed member's one known root, track every known root around loops
 // p0 → p1 → p2 → p0 through random complex members; a loop permutes the roots, so new ones appear
-// until every root is known. Stop after kStaleLoops loops that add nothing, then cross-check
-// with the total-degree homotopy when the Bézout number is small enough (the trace test is not
-// implemented; above the limit, a second monodromy from an independent member). Every root is
+// until every root is known. Stop after kStaleLoops loops that add nothing, then (unless while
+// solving) cross-check with the total-degree homotopy when the Bézout number is small enough
+// (above the limit, a second monodromy from an independent member; the generator of the stored
+// ones adds the trace test, trace_test.hpp). Every root is
 // certified (Krawczyk on the member's double coefficients); two roots are taken as one only when a
 // box around both passes the test, so an uncertain case counts two — a count too high only ever
 // makes solveFiber say "not complete".
@@ -139,7 +140,8 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
 namespace detail {
 
 std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t max_bezout,
-                                                std::uint64_t seed, std::uint64_t max_steps) {
+                                                std::uint64_t seed, std::uint64_t max_steps,
+                                                bool cross_check) {
   auto out = std::make_unique<StartSystem>();
   StepBudget budget;
   budget.limited = max_steps > 0;
@@ -169,6 +171,10 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
   out->monodromy_loops = monodromy(f, shape, p0, mixSeed(seed, 1), set, budget);
   if (budget.exceeded()) return overBudget();
   out->check = "monodromy";
+  if (!cross_check) {
+    for (const CVec& r : set.roots()) out->roots.push_back(r);
+    return out;
+  }
   const std::uint64_t bezout = bezoutNumber(shape);
   if (bezout > 0 && bezout <= max_bezout) {
     // Cross-check: every root the total-degree homotopy finds, added.
@@ -244,7 +250,9 @@ const StartSystem* lookUp(const Family& f, bool compute, std::uint64_t max_steps
   lock.unlock();
   std::unique_ptr<StartSystem> computed;
   try {
-    computed = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, max_steps);
+    // while solving (a step budget): monodromy alone, no cross-check
+    computed = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, max_steps,
+                                          max_steps == 0);
   } catch (...) {
     promise.set_exception(std::current_exception());  // to those waiting for it
     lock.lock();

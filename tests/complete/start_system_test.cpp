@@ -67,6 +67,22 @@ TEST(StartSystem, AComputationOverItsStepBudgetStopsWithNoRoots) {
   EXPECT_EQ(within->roots.size(), 9u);  // Bézout
 }
 
+// While solving (findStartSystem, a step budget) the start system is monodromy's alone, with
+// every root (the cross-check is what startSystem, unbudgeted, and the stored ones add).
+TEST(StartSystem, WhileSolvingMonodromyAloneFindsEveryRoot) {
+  const testing::DenseFamily f(2, 3);
+  const auto alone = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 1000000, false);
+  EXPECT_EQ(alone->check, "monodromy");
+  EXPECT_EQ(alone->total_degree_paths, 0);
+  EXPECT_EQ(alone->roots.size(), 9u);  // Bézout
+  expectDistinctRoots(f, *alone);
+  const testing::DenseFamily g(3, 3);  // a signature no other test of this program computes
+  const StartSystem* solving = findStartSystem(g, true);
+  ASSERT_NE(solving, nullptr);
+  EXPECT_EQ(solving->check, "monodromy");
+  EXPECT_EQ(solving->roots.size(), 27u);  // Bézout
+}
+
 TEST(StartSystem, StewartGoughHasFortyRoots) {
   const testing::StewartFamily f;
   const auto t0 = std::chrono::steady_clock::now();
