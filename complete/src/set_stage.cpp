@@ -12,6 +12,10 @@
 #include "point_search.hpp"
 #include "relpos/complete/stage.hpp"
 #include "relpos/core/constraint_text.hpp"
+#include "relpos/manifolds/rotation/fixed.hpp"
+#include "relpos/manifolds/separable.hpp"
+#include "relpos/manifolds/translation/point.hpp"
+#include "tangent_pose.hpp"
 
 namespace relpos::complete {
 namespace {
@@ -213,6 +217,8 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
     detail::EquationSlack slack;
     std::vector<std::shared_ptr<const ChartData>> charts;
     std::size_t sets = 0;  // charts of positive dimension (max_charts counts only these)
+    std::vector<std::pair<Matrix3d, Vector3d>> touching;  // tangentPose's, normalised
+    std::size_t answered() const { return charts.size() + touching.size(); }
   };
   std::vector<Alternative> alternatives(systems.size());
   for (std::size_t a = 0; a < systems.size(); ++a) {
@@ -240,6 +246,32 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   // Each alternative's share of the answer's branches, isolated poses included.
   const std::size_t share =
       std::max(quota, kMostBranches / std::max<std::size_t>(systems.size(), 1));
+  // Where the equations are dependent at the pose found because two constraints touch there:
+  // the touching pose, proven (tangent_pose.hpp), an isolated pose of the set — answered once,
+  // checked against every input constraint.
+  auto touchingPose = [&](Alternative& alt, const Matrix3d& R, const Vector3d& t, double length_tol,
+                          double angle_tol) {
+    detail::TangentPose tp;
+    if (!detail::tangentPose(alt.s, R, t, length_tol, angle_tol, &tp)) return false;
+    for (const auto& [R2, t2] : alt.touching)
+      if ((t2 - tp.t).norm() + (R2 - tp.R).norm() < 1e-7) return true;
+    Isometry3d scaled = Isometry3d::Identity();
+    scaled.linear() = tp.R;
+    scaled.translation() = tp.t;
+    const Isometry3d X = alt.s.frame.poseOf(scaled);
+    if (!(detail::worstViolation(problem, registry, tol, X) <= kCheckTolerances)) return false;
+    alt.touching.emplace_back(tp.R, tp.t);
+    Branch b;
+    b.manifold.emplace<manifolds::SeparableManifold>(
+        manifolds::rotation::Fixed(X.linear()),
+        manifolds::translation::Point(
+            Fundamental::pointPoint(Vector3d::Zero(), X.translation(), 0.0, sources)));
+    b.sources = sources;
+    b.exact = false;
+    b.certified = {tp.radius * alt.s.frame.scale, 2.0 * tp.radius};
+    branches.push_back(std::move(b));
+    return true;
+  };
   // The descents from starts [first, last) of every alternative (the same starts for each,
   // whatever the constraints' order), a chart about each pose found that no chart holds yet.
   auto search = [&](int first, int last) {
@@ -247,7 +279,7 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
       const ConditionSystem& s = alt.s;
       const double length_tol = tol.length / s.frame.scale;
       const auto starts = startPoses(problem, s, last);
-      for (int k = first; k < last && alt.sets < quota && alt.charts.size() < share; ++k) {
+      for (int k = first; k < last && alt.sets < quota && alt.answered() < share; ++k) {
         auto [R, t] = starts[static_cast<std::size_t>(k)];
         if (!detail::findPoint(s, &R, &t, alt.slack)) continue;
         ++points;
@@ -259,7 +291,8 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
         // no chart at a singular pose (or one so nearly singular that no proof holds)
         if (!chartAt(s, R, t, length_tol, tol.angle, &data->chart, &earlier) ||
             !grown(data->chart, hint)) {
-          dependent |= detail::dependentSources(s, R, t);
+          if (!touchingPose(alt, R, t, length_tol, tol.angle))
+            dependent |= detail::dependentSources(s, R, t);
           continue;
         }
         if (!impliedHold(data->chart, alt.implied, earlier, length_tol, tol.angle)) continue;
