@@ -18,4 +18,12 @@ struct EquationSlack {
 bool findPoint(const ConditionSystem& system, Matrix3d* R, Vector3d* t,
                const EquationSlack& slack = EquationSlack());
 
+// Newton's method, least-norm steps, on the equations alone from (R, t) (in place): a pose a
+// descent found holds them to its acceptance (1e-12, or the slack of a far-placed problem's
+// rounding); a chart's proof about it needs a slice as wide as that residual over the
+// equations' conditioning, and what it proves of a dropped equation is no tighter. A few steps
+// take the residual to rounding. Stops where a step does not lower the residual (or the
+// equations are dependent there); never moves further than 1e-6.
+void polishPose(const std::vector<Condition>& equations, Matrix3d* R, Vector3d* t);
+
 }  // namespace relpos::complete::detail

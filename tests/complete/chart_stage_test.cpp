@@ -251,6 +251,31 @@ TEST(ChartStage, TouchingPosesAreFoundInEveryMovedCopy) {
   }
 }
 
+// data/regressions/dependent-equations-apart-by-rounding.json: four random constraints built
+// around a known pose (a line-plane distance range, a perpendicularity, a skew line distance,
+// a point-line distance) whose equations say one thing twice, 2.2e-12 apart by the rounding of
+// the values stated: every descent ended there, over the thousandth of a tolerance once
+// accepted, and the problem went unanswered where its copies moved 1e6 (accepted within their
+// rounding) were charted. Now every copy, the problem as given too, is charted: 1-DOF pieces.
+TEST(ChartStage, EquationsSaidTwiceApartByRoundingAreCharted) {
+  const ParseResult r = parseSpecFile(
+      RELPOS_DATA_DIR "/regressions/dependent-equations-apart-by-rounding.json",
+      builtinRegistry());
+  ASSERT_TRUE(r.problem.has_value());
+  std::vector<ProblemTransform> transforms = invarianceTransforms();
+  transforms.insert(transforms.begin(), ProblemTransform());  // the identity: as given
+  for (const ProblemTransform& t : transforms) {
+    SCOPED_TRACE(t.label);
+    const Problem p = t.apply(*r.problem);
+    const Solution s = solve(p, builtinRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    for (const Branch& b : s.branches) {
+      EXPECT_EQ(b.manifold->dof(), 1);
+      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
+    }
+  }
+}
+
 // Constraints that repeat what another pins, in random worlds: a point on a point and at its
 // distance from another fixed point (DOF 3, the turns about it); a line on a line and a fixed
 // point at its distance from the mobile line (DOF 2); a face on a face and a fixed point at its
