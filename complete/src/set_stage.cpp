@@ -111,7 +111,7 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
   std::vector<double> within;
   for (const detail::Condition& c : dropped) {
     // Moved 1e6 away, the coordinates' rounding alone leaves a constant said twice 1e-10 apart
-    // at the exact base (measured: 2 of 300 random problems lost their charts in a far-placed
+    // at the exact base (measured: one of 300 random problems lost its chart in a far-placed
     // copy); slack is a hundredth of the tolerance where that rounding is less.
     double allowed =
         detail::toleranceInUnits(c, 0.5 * length_tol + slack.length, 0.5 * angle_tol + slack.angle);

@@ -115,25 +115,36 @@ TEST(ChartStage, MovedTurnedAndScaledCopiesGiveTheSameCharts) {
   EXPECT_LE(differing * 4, compared);
 }
 
+// A spec of data/regressions as given and in every copy of the invariance transforms (moved 1e6
+// away, scaled, turned): each solved by the numeric stage (not exact), with `branches` branches
+// (0: any number) of `dof` each, every branch's base pose meeting every constraint.
+void expectEveryCopyAnswered(const std::string& file, int dof, std::size_t branches) {
+  const ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/regressions/" + file, builtinRegistry());
+  ASSERT_TRUE(r.problem.has_value());
+  std::vector<ProblemTransform> transforms = invarianceTransforms();
+  transforms.insert(transforms.begin(), ProblemTransform());  // the identity: as given
+  for (const ProblemTransform& t : transforms) {
+    SCOPED_TRACE(t.label);
+    const Problem p = t.apply(*r.problem);
+    const Solution s = solve(p, builtinRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    if (branches > 0) {
+      EXPECT_EQ(s.branches.size(), branches);
+    }
+    for (const Branch& b : s.branches) {
+      EXPECT_FALSE(b.exact);
+      EXPECT_EQ(b.manifold->dof(), dof);
+      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
+    }
+  }
+}
+
 // data/regressions/far-placed-numeric-stage-slack.json: an isolated pose the numeric stage
 // charts, and every copy of it moved 1e6 away or scaled is charted too. Moved, the descents ended
 // 1.4e-11 from an offset's value, the coordinates' rounding, where only a thousandth of the
 // tolerance (7e-12) was accepted: three of the six copies went unanswered.
 TEST(ChartStage, AFarPlacedCopyIsChartedToo) {
-  const ParseResult r = parseSpecFile(
-      RELPOS_DATA_DIR "/regressions/far-placed-numeric-stage-slack.json", builtinRegistry());
-  ASSERT_TRUE(r.problem.has_value());
-  for (const ProblemTransform& t : invarianceTransforms()) {
-    SCOPED_TRACE(t.label);
-    const Problem p = t.apply(*r.problem);
-    const Solution s = solve(p, builtinRegistry());
-    ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    for (const Branch& b : s.branches) {
-      EXPECT_FALSE(b.exact);  // the numeric stage's, as the problem as given is
-      EXPECT_EQ(b.manifold->dof(), 0);
-      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
-    }
-  }
+  expectEveryCopyAnswered("far-placed-numeric-stage-slack.json", 0, 0);
 }
 
 // Same input, same output: solving twice gives the same charts, to the last bit.
@@ -235,20 +246,7 @@ TEST(ChartStage, TouchingConstraintsGiveTheirIsolatedPoses) {
 // data/regressions/touching-sphere-and-plane.json, the same touch: both poses in every copy
 // moved 1e6 away, scaled or turned.
 TEST(ChartStage, TouchingPosesAreFoundInEveryMovedCopy) {
-  const ParseResult r = parseSpecFile(
-      RELPOS_DATA_DIR "/regressions/touching-sphere-and-plane.json", builtinRegistry());
-  ASSERT_TRUE(r.problem.has_value());
-  for (const ProblemTransform& t : invarianceTransforms()) {
-    SCOPED_TRACE(t.label);
-    const Problem p = t.apply(*r.problem);
-    const Solution s = solve(p, builtinRegistry());
-    ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    EXPECT_EQ(s.branches.size(), 2u);
-    for (const Branch& b : s.branches) {
-      EXPECT_EQ(b.manifold->dof(), 0);
-      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
-    }
-  }
+  expectEveryCopyAnswered("touching-sphere-and-plane.json", 0, 2);
 }
 
 // data/regressions/dependent-equations-apart-by-rounding.json: four random constraints built
@@ -258,22 +256,7 @@ TEST(ChartStage, TouchingPosesAreFoundInEveryMovedCopy) {
 // accepted, and the problem went unanswered where its copies moved 1e6 (accepted within their
 // rounding) were charted. Now every copy, the problem as given too, is charted: 1-DOF pieces.
 TEST(ChartStage, EquationsSaidTwiceApartByRoundingAreCharted) {
-  const ParseResult r = parseSpecFile(
-      RELPOS_DATA_DIR "/regressions/dependent-equations-apart-by-rounding.json",
-      builtinRegistry());
-  ASSERT_TRUE(r.problem.has_value());
-  std::vector<ProblemTransform> transforms = invarianceTransforms();
-  transforms.insert(transforms.begin(), ProblemTransform());  // the identity: as given
-  for (const ProblemTransform& t : transforms) {
-    SCOPED_TRACE(t.label);
-    const Problem p = t.apply(*r.problem);
-    const Solution s = solve(p, builtinRegistry());
-    ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    for (const Branch& b : s.branches) {
-      EXPECT_EQ(b.manifold->dof(), 1);
-      EXPECT_LT(RelativeEvaluator(p, problemSize(p)).worst(b.manifold->pose(Params{})), 1e-8);
-    }
-  }
+  expectEveryCopyAnswered("dependent-equations-apart-by-rounding.json", 1, 0);
 }
 
 // Constraints that repeat what another pins, in random worlds: a point on a point and at its
