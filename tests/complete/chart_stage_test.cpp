@@ -659,7 +659,8 @@ TEST(ChartStage, EveryIsolatedPoseFoundIsAnswered) {
       }
     const Solution s = solveByCharts(p);
     ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    // More than the two charts of the quota; all four where the twelve starts reach each.
+    // More than the two charts of the quota; all four where the starts (twelve, then twelve
+    // more: only isolated poses found) reach each.
     EXPECT_GE(s.branches.size(), 3u);
     std::vector<int> matched(4, 0);
     for (const Branch& b : s.branches) {
@@ -676,7 +677,10 @@ TEST(ChartStage, EveryIsolatedPoseFoundIsAnswered) {
     for (int k = 0; k < 4; ++k) EXPECT_LE(matched[k], 1) << "pose " << k << " answered twice";
     found += static_cast<int>(s.branches.size());
   }
-  EXPECT_GE(found, 36);  // of 40: measured 37 (at most 20 when they counted as charts)
+  std::printf("[isolated] %d of 40 poses answered\n", found);
+  // of 40: measured 40 — 37 before the starts went on where only isolated poses were found, at
+  // most 20 when they counted as charts
+  EXPECT_GE(found, 39);
 }
 
 // An angle equation implied by two others on the same mobile direction (its fixed direction in
