@@ -67,8 +67,9 @@ TEST(StartSystem, AComputationOverItsStepBudgetStopsWithNoRoots) {
   EXPECT_EQ(within->roots.size(), 9u);  // Bézout
 }
 
-// While solving (findStartSystem, a step budget) the start system is monodromy's alone, with
-// every root (the cross-check is what startSystem, unbudgeted, and the stored ones add).
+// While solving (findStartSystem, a step budget) the start system is monodromy's alone — a
+// fixed graph of members, then loops — with every root (the cross-check is what startSystem,
+// unbudgeted, and the stored ones add).
 TEST(StartSystem, WhileSolvingMonodromyAloneFindsEveryRoot) {
   const testing::DenseFamily f(2, 3);
   const auto alone = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 1000000, false);
@@ -81,6 +82,16 @@ TEST(StartSystem, WhileSolvingMonodromyAloneFindsEveryRoot) {
   ASSERT_NE(solving, nullptr);
   EXPECT_EQ(solving->check, "monodromy");
   EXPECT_EQ(solving->roots.size(), 27u);  // Bézout
+}
+
+// The 6-6 platform's 40 roots (Dietmaier), computed the way a solve computes a start system.
+TEST(StartSystem, WhileSolvingTheStewartPlatformGetsAllFortyRoots) {
+  const testing::StewartFamily f;
+  const auto s = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0,
+                                            detail::kSolvingStepBudget, false);
+  EXPECT_EQ(s->check, "monodromy");
+  EXPECT_EQ(s->roots.size(), 40u);
+  expectDistinctRoots(f, *s);
 }
 
 TEST(StartSystem, StewartGoughHasFortyRoots) {
