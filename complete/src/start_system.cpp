@@ -107,16 +107,21 @@ std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& sha
   return out;
 }
 
-// Monodromy loops at p0 from the roots in `set` until kStaleLoops loops add nothing (or
+// The scale of member p0's parameters (their root mean square; 1 when 0): random members are
+// complex Gaussian at that scale.
+double memberScale(const std::vector<Complex>& p0) {
+  double scale = 0.0;
+  for (const Complex& p : p0) scale += std::norm(p);
+  scale = p0.empty() ? 1.0 : std::sqrt(scale / static_cast<double>(p0.size()));
+  return scale > 0.0 ? scale : 1.0;
+}
+
+// Monodromy loops at p0 from the roots in `set` until `stale_loops` loops add nothing (or
 // kMaxLoops, or the budget runs out); returns the loops run.
 int monodromy(const Family& f, const detail::CompiledShape& shape, const std::vector<Complex>& p0,
               std::uint64_t seed, RootSet& set, StepBudget& budget, int stale_loops = kStaleLoops) {
   const int np = f.parameterCount();
-  // Loop points: complex Gaussian, at the scale of the member's parameters.
-  double scale = 0.0;
-  for (const Complex& p : p0) scale += std::norm(p);
-  scale = np > 0 ? std::sqrt(scale / np) : 1.0;
-  if (!(scale > 0.0)) scale = 1.0;
+  const double scale = memberScale(p0);
   detail::SplitMix64 rng(seed);
   auto randomPoint = [&] {
     std::vector<Complex> p(np);
@@ -147,11 +152,7 @@ int monodromy(const Family& f, const detail::CompiledShape& shape, const std::ve
 int graphMonodromy(const Family& f, const detail::CompiledShape& shape,
                    const std::vector<Complex>& p0, std::uint64_t seed, RootSet& set0,
                    StepBudget& budget) {
-  const int np = f.parameterCount();
-  double scale = 0.0;
-  for (const Complex& p : p0) scale += std::norm(p);
-  scale = np > 0 ? std::sqrt(scale / np) : 1.0;
-  if (!(scale > 0.0)) scale = 1.0;
+  const double scale = memberScale(p0);
   detail::SplitMix64 rng(seed);
   std::vector<std::vector<Complex>> node(3, p0), coefficients(3);
   for (int k = 1; k < 3; ++k)
