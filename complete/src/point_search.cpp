@@ -143,9 +143,12 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
 
 }  // namespace
 
-// The equations' residuals and Jacobian at the base of their frame (y = 0).
+namespace {
+
 using PolishVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 using PolishJacobian = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>;
+
+// The equations' residuals and Jacobian at the base of their frame (y = 0).
 void equationsAtBase(const std::vector<Condition>& eq, PolishVector* e, PolishJacobian* J) {
   const LocalPose<Dual<double>> X(LocalPose<Dual<double>>::AtBase{});
   const auto m = static_cast<Eigen::Index>(eq.size());
@@ -158,6 +161,8 @@ void equationsAtBase(const std::vector<Condition>& eq, PolishVector* e, PolishJa
     for (int j = 0; j < 6; ++j) (*J)(i, j) = g.g[j];
   }
 }
+
+}  // namespace
 
 void polishPose(const std::vector<Condition>& equations, Matrix3d* R, Vector3d* t) {
   const auto m = static_cast<Eigen::Index>(equations.size());
@@ -190,6 +195,8 @@ bool findPoint(const ConditionSystem& s, Matrix3d* R, Vector3d* t, const Equatio
   for (double shrink : kShrinks) {
     descend(s, shrink, R, t);
     if (!R->allFinite() || !t->allFinite()) return false;
+    // the descent's last steps creep (it stops after eight that barely lower the cost): Newton's
+    // method finishes a regular point's last digits
     polishPose(s.equations, R, t);
     if (holds(s, *R, *t, slack)) return true;
     if (s.inequalities.empty()) return false;  // the shrink changes nothing
