@@ -314,6 +314,14 @@ double toleranceInUnits(const Condition& c, double length, double angle) {
   }
 }
 
+double toleranceAt(const Condition& c, const Matrix3d& R, double length, double angle) {
+  const double allowed = toleranceInUnits(c, length, angle);
+  if (c.kind != ConditionKind::kSkew && c.kind != ConditionKind::kSkewSquared) return allowed;
+  const double n = 0.9 * (R * vec(c.u)).cross(vec(c.d)).norm();
+  return c.kind == ConditionKind::kSkew ? n * allowed
+                                        : 2.0 * std::sqrt(std::max(c.k, 0.0)) * n * n * allowed;
+}
+
 Condition inBaseFrame(const Condition& c, const Matrix3d& R0, const Vector3d& t0) {
   Condition r = c;
   const Vector3d q(c.q[0], c.q[1], c.q[2]), d(c.d[0], c.d[1], c.d[2]);

@@ -79,6 +79,10 @@ double worstViolation(const Problem& problem, const Registry& registry, const To
 // the length's, an upper bound only (its value moves by |n|·δ, |n| ≤ 1: set_stage.cpp reads |n|
 // at the pose where it must be a tolerance).
 double toleranceInUnits(const Condition& c, double length, double angle);
+// The same, a skew condition's made exact at rotation R (of the condition's frame): h = (x − q)·n
+// with |n| the sine of the lines' angle moves by |n|·δ for a distance δ, h² − k|n|² by
+// 2·√k·|n|²·δ; |n| read at R, less a 10 % margin for poses near it.
+double toleranceAt(const Condition& c, const Matrix3d& R, double length, double angle);
 
 // The conditions with their fixed data moved into the frame of the base pose (R0, t0): then the
 // pose R0·Q(a, b, c), t0 + R0·τ has the coordinates y = (a, b, c, τ), and y = 0 is the base.

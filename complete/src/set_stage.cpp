@@ -118,20 +118,12 @@ bool chartAt(const ConditionSystem& s, const Matrix3d& R, const Vector3d& t, dou
     // Moved 1e6 away, the coordinates' rounding alone leaves a constant said twice 1e-10 apart
     // at the exact base (measured: one of 300 random problems lost its chart in a far-placed
     // copy); slack is a hundredth of the tolerance where that rounding is less.
-    double allowed =
-        detail::toleranceInUnits(c, 0.5 * length_tol + slack.length, 0.5 * angle_tol + slack.angle);
-    if (c.kind == detail::ConditionKind::kSkew || c.kind == detail::ConditionKind::kSkewSquared) {
-      // h = (x − q)·n with |n| = sin of the lines' angle: a distance δ is h by |n|·δ,
-      // h² − k|n|² by 2·√k·|n|²·δ; |n| read at the base, less a margin far beyond how far the
-      // exact base is. What is constant on the piece is the distance |h|/|n| (with the
-      // direction pinned |n| is too; a skew across a pinned direction, kept off parallel, turns
-      // with |n| but keeps that distance), so the base's bound on it holds on the whole piece.
-      const double n = 0.9 * (R * detail::vec(c.u)).cross(detail::vec(c.d)).norm();
-      allowed = c.kind == detail::ConditionKind::kSkew
-                    ? n * allowed
-                    : 2.0 * std::sqrt(std::max(c.k, 0.0)) * n * n * allowed;
-    }
-    within.push_back(allowed);
+    // A skew condition's |n| read at the base, less a margin far beyond how far the exact base
+    // is. What is constant on the piece is the distance |h|/|n| (with the direction pinned |n|
+    // is too; a skew across a pinned direction, kept off parallel, turns with |n| but keeps that
+    // distance), so the base's bound on it holds on the whole piece.
+    within.push_back(
+        detail::toleranceAt(c, R, 0.5 * length_tol + slack.length, 0.5 * angle_tol + slack.angle));
   }
   std::vector<double> proven;
   if (!detail::holdAtExactBase(*chart, dropped, within, &proven)) return false;
@@ -276,7 +268,9 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
   auto touchingPose = [&](Alternative& alt, const Matrix3d& R, const Vector3d& t, double length_tol,
                           double angle_tol) {
     detail::TangentPose tp;
-    if (!detail::tangentPose(alt.s, R, t, length_tol, angle_tol, &tp)) return false;
+    std::vector<detail::Condition> implied;
+    for (const detail::ImpliedEquation& e : alt.implied) implied.push_back(e.condition);
+    if (!detail::tangentPose(alt.s, implied, R, t, length_tol, angle_tol, &tp)) return false;
     for (const auto& [R2, t2] : alt.touching)
       if ((t2 - tp.t).norm() + (R2 - tp.R).norm() < 1e-7) return true;
     Isometry3d scaled = Isometry3d::Identity();
@@ -292,7 +286,11 @@ bool solveSets(const Problem& problem, const Registry& registry, const Tolerance
             Fundamental::pointPoint(Vector3d::Zero(), X.translation(), 0.0, sources)));
     b.sources = sources;
     b.exact = false;
-    b.certified = {tp.radius * alt.s.frame.scale, 2.0 * tp.radius};
+    // The box's half-width w in each local coordinate: the turn within 2·√3·w, the position
+    // within √3·w (normalised) and the turn's reach from the rotation's centre to the origin.
+    const double turn = 2.0 * std::sqrt(3.0) * tp.radius;
+    b.certified = {
+        std::sqrt(3.0) * tp.radius * alt.s.frame.scale + turn * alt.s.frame.centre_M.norm(), turn};
     branches.push_back(std::move(b));
     return true;
   };

@@ -163,8 +163,9 @@ bool inside(const FI& v, double lo, double hi) { return lo <= v.lower() && v.upp
 
 }  // namespace
 
-bool tangentPose(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
-                 double length_tol, double angle_tol, TangentPose* out) {
+bool tangentPose(const ConditionSystem& system, const std::vector<Condition>& implied,
+                 const Matrix3d& R0, const Vector3d& t0, double length_tol, double angle_tol,
+                 TangentPose* out) {
   std::vector<Condition> eqs, ins;
   inBaseFrame(system.equations, R0, t0, &eqs);
   inBaseFrame(system.inequalities, R0, t0, &ins);
@@ -206,22 +207,36 @@ bool tangentPose(const ConditionSystem& system, const Matrix3d& R0, const Vector
   for (double d = 1e-11; d <= 1e-5 && delta == 0.0; d *= 10.0)
     if (krawczyk(L, X, Y, d)) delta = d;
   if (delta == 0.0) return false;
-  // g within half its tolerance, and every inequality, over the pose's part of the box
+  Vector6d yv;
+  for (int i = 0; i < 6; ++i) yv[i] = X[i];
+  poseAt(R0, t0, yv, &out->R, &out->t);
+  // Over the pose's part of the box: g and every h within half its tolerance (h holds exactly
+  // at the critical point, somewhere in the box), the implied equations within theirs, every
+  // inequality in its range — each equation's allowance in its own units at the pose's turn
+  // (a skew distance's by the sine of its lines' angle there).
   {
+    std::vector<Condition> implied_here;
+    inBaseFrame(implied, R0, t0, &implied_here);
+    std::vector<double> allowed;
+    for (const Condition& c : system.equations)
+      allowed.push_back(toleranceAt(c, out->R, 0.5 * length_tol, 0.5 * angle_tol));
+    for (const Condition& c : implied)
+      allowed.push_back(toleranceAt(c, out->R, length_tol, angle_tol));
     RoundUp rounding;
     std::array<FI, 6> y;
     for (int i = 0; i < 6; ++i)
       y[i] = FI(X[i]) + FI(-delta * (1.0 + std::abs(X[i])), delta * (1.0 + std::abs(X[i])));
     const LocalPose<FI> P(y);
-    FI gv = evaluate(L.g, P) - FI(L.g.lo);
-    const double allowed = toleranceInUnits(L.g, 0.5 * length_tol, 0.5 * angle_tol);
-    if (!inside(gv, -allowed, allowed)) return false;
+    std::size_t k = 0;
+    for (const std::vector<Condition>* list : {&eqs, &implied_here})
+      for (const Condition& c : *list) {
+        const FI off = evaluate(c, P) - FI(c.lo);
+        if (!inside(off, -allowed[k], allowed[k])) return false;
+        ++k;
+      }
     for (const Condition& c : ins)
       if (!inside(evaluate(c, P), c.lo, c.hi)) return false;
   }
-  Vector6d yv;
-  for (int i = 0; i < 6; ++i) yv[i] = X[i];
-  poseAt(R0, t0, yv, &out->R, &out->t);
   out->radius = 0.0;
   for (int i = 0; i < 6; ++i) out->radius = std::max(out->radius, delta * (1.0 + std::abs(X[i])));
   return true;

@@ -20,9 +20,12 @@ struct TangentPose {
 
 // From a pose (R0, t0) of the system where its equations are dependent, one of them dependent
 // on the others: the touching pose near it, proven; false otherwise (rank not short by one,
-// no critical point proven, a saddle, g or an inequality not proven within its bounds).
-// length_tol, angle_tol: the tolerance, normalised.
-bool tangentPose(const ConditionSystem& system, const Matrix3d& R0, const Vector3d& t0,
-                 double length_tol, double angle_tol, TangentPose* out);
+// no critical point proven, a saddle, or over the proven box an equation not within half its
+// tolerance, an implied one — dropped from the system as following from others, in its frame —
+// not within its tolerance, an inequality not within its range). length_tol, angle_tol: the
+// tolerance, normalised.
+bool tangentPose(const ConditionSystem& system, const std::vector<Condition>& implied,
+                 const Matrix3d& R0, const Vector3d& t0, double length_tol, double angle_tol,
+                 TangentPose* out);
 
 }  // namespace relpos::complete::detail
