@@ -9,7 +9,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-
 // g for an inequality, g − target for an equation (its residual).
 template <typename T>
 void evaluateAll(const std::vector<Condition>& cs, const std::array<T, 6>& y, T* out) {
@@ -17,33 +16,6 @@ void evaluateAll(const std::vector<Condition>& cs, const std::array<T, 6>& y, T*
   for (std::size_t i = 0; i < cs.size(); ++i) {
     out[i] = evaluate(cs[i], X);
     if (cs[i].equation()) out[i] = out[i] - lift<T>(cs[i].lo);
-  }
-}
-
-// At most six equations: their matrices have fixed capacity, so a chart's pose (Newton's method,
-// run for every sample and nearest-pose query) allocates nothing.
-using EquationVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
-using EquationMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-
-// The equations' residuals at y, and their Jacobian (rows: equations, columns: y) when J is set.
-void equationsAt(const std::vector<Condition>& eqs, const Vector6d& y, EquationVector* e,
-                 Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>* J = nullptr) {
-  const auto m = static_cast<Eigen::Index>(eqs.size());
-  e->resize(m);
-  if (!J) {
-    std::array<double, 6> ya;
-    for (int i = 0; i < 6; ++i) ya[i] = y[i];
-    evaluateAll(eqs, ya, e->data());
-    return;
-  }
-  std::array<Dual<double>, 6> yd;
-  for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
-  std::array<Dual<double>, 6> out;
-  evaluateAll(eqs, yd, out.data());
-  J->resize(m, 6);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    (*e)[i] = out[static_cast<std::size_t>(i)].v;
-    for (int j = 0; j < 6; ++j) (*J)(i, j) = out[static_cast<std::size_t>(i)].g[j];
   }
 }
 
@@ -95,6 +67,27 @@ bool inside(const FI& v, double lo, double hi) { return lo <= v.lower() && v.upp
 
 }  // namespace
 
+void equationsAt(const std::vector<Condition>& eqs, const Vector6d& y, EquationVector* e,
+                 EquationJacobian* J) {
+  const auto m = static_cast<Eigen::Index>(eqs.size());
+  e->resize(m);
+  if (!J) {
+    std::array<double, 6> ya;
+    for (int i = 0; i < 6; ++i) ya[i] = y[i];
+    evaluateAll(eqs, ya, e->data());
+    return;
+  }
+  std::array<Dual<double>, 6> yd;
+  for (int i = 0; i < 6; ++i) yd[i] = Dual<double>::variable(y[i], i);
+  std::array<Dual<double>, 6> out;
+  evaluateAll(eqs, yd, out.data());
+  J->resize(m, 6);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    (*e)[i] = out[static_cast<std::size_t>(i)].v;
+    for (int j = 0; j < 6; ++j) (*J)(i, j) = out[static_cast<std::size_t>(i)].g[j];
+  }
+}
+
 void poseAt(const Matrix3d& R0, const Vector3d& t0, const Vector6d& y, Matrix3d* R, Vector3d* t) {
   std::array<double, 6> ya;
   for (int i = 0; i < 6; ++i) ya[i] = y[i];
@@ -119,7 +112,7 @@ bool makeChart(const ConditionSystem& system, const Matrix3d& R0, const Vector3d
     if (!(c.inequalities[i].lo < g[i] && g[i] < c.inequalities[i].hi)) return false;
   if (c.m > 0) {
     EquationVector e;
-    Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> J;
+    EquationJacobian J;
     equationsAt(c.equations, Vector6d::Zero(), &e, &J);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
@@ -296,7 +289,7 @@ void chartPose(const Chart& c, const std::array<double, 6>& theta, Matrix3d* R, 
       if (step.lpNorm<Eigen::Infinity>() < 1e-15) break;
     }
     for (int it = 0; it < 2; ++it) {
-      Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> J;
+      EquationJacobian J;
       equationsAt(c.equations, c.basis * z, &e, &J);
       const EquationMatrix Js = J * c.basis.rightCols(c.m);
       step = Js.partialPivLu().solve(e);

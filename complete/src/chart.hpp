@@ -17,6 +17,17 @@ namespace relpos::complete::detail {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
+// At most six equations: their matrices have fixed capacity, so a chart's pose (Newton's method,
+// run for every sample and nearest-pose query) allocates nothing.
+using EquationVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+using EquationMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+using EquationJacobian = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>;
+
+// The equations' residuals (g − target) at local coordinates y, and their Jacobian (rows:
+// equations, columns: y) when J is set.
+void equationsAt(const std::vector<Condition>& eqs, const Vector6d& y, EquationVector* e,
+                 EquationJacobian* J = nullptr);
+
 // A singular value under this fraction of the largest: the equations are dependent there (no
 // chart; the dependent ones' reduction, dependent_equations.hpp, uses the same gap).
 inline constexpr double kRankGap = 1e-7;

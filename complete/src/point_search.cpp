@@ -143,38 +143,17 @@ void descend(const ConditionSystem& s, double shrink, Matrix3d* R, Vector3d* t) 
 
 }  // namespace
 
-namespace {
-
-using PolishVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
-using PolishJacobian = Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6>;
-
-// The equations' residuals and Jacobian at the base of their frame (y = 0).
-void equationsAtBase(const std::vector<Condition>& eq, PolishVector* e, PolishJacobian* J) {
-  const LocalPose<Dual<double>> X(LocalPose<Dual<double>>::AtBase{});
-  const auto m = static_cast<Eigen::Index>(eq.size());
-  e->resize(m);
-  J->resize(m, 6);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    const Condition& c = eq[static_cast<std::size_t>(i)];
-    const Dual<double> g = evaluate(c, X);
-    (*e)[i] = g.v - c.lo;
-    for (int j = 0; j < 6; ++j) (*J)(i, j) = g.g[j];
-  }
-}
-
-}  // namespace
-
 void polishPose(const std::vector<Condition>& equations, Matrix3d* R, Vector3d* t) {
   const auto m = static_cast<Eigen::Index>(equations.size());
   if (m == 0 || m > 6) return;
   std::vector<Condition> eq;
-  PolishVector e;
-  PolishJacobian J;
+  EquationVector e;
+  EquationJacobian J;
   inBaseFrame(equations, *R, *t, &eq);
-  equationsAtBase(eq, &e, &J);
+  equationsAt(eq, Vector6d::Zero(), &e, &J);
   double residual = e.lpNorm<Eigen::Infinity>(), moved = 0.0;
   for (int it = 0; it < 3 && residual > 1e-16; ++it) {
-    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6> JJt = J * J.transpose();
+    const EquationMatrix JJt = J * J.transpose();
     const Vector6d step = -J.transpose() * JJt.ldlt().solve(e);
     if (!step.allFinite() || moved + step.norm() > 1e-6) return;
     Matrix3d R2;
@@ -182,9 +161,9 @@ void polishPose(const std::vector<Condition>& equations, Matrix3d* R, Vector3d* 
     poseAt(*R, *t, step, &R2, &t2);
     R2 = Eigen::Quaterniond(R2).normalized().toRotationMatrix();
     inBaseFrame(equations, R2, t2, &eq);
-    PolishVector e2;
-    PolishJacobian J2;
-    equationsAtBase(eq, &e2, &J2);
+    EquationVector e2;
+    EquationJacobian J2;
+    equationsAt(eq, Vector6d::Zero(), &e2, &J2);
     const double r2 = e2.lpNorm<Eigen::Infinity>();
     if (!(r2 < residual)) return;
     *R = R2, *t = t2, e = e2, J = J2, residual = r2, moved += step.norm();

@@ -186,8 +186,13 @@ bool tangentPose(const ConditionSystem& system, const std::vector<Condition>& im
   Eigen::Index gi = 0;
   svd.matrixU().col(m - 1).cwiseAbs().maxCoeff(&gi);
   Lagrange L;
-  for (Eigen::Index i = 0; i < m; ++i)
-    (i == gi ? L.g : (L.h.emplace_back(), L.h.back())) = eqs[static_cast<std::size_t>(i)];
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Condition& c = eqs[static_cast<std::size_t>(i)];
+    if (i == gi)
+      L.g = c;
+    else
+      L.h.push_back(c);
+  }
   const int r = static_cast<int>(L.h.size()), n = L.n();
   // λ: ∇g = Σ λ ∇h in the least-squares sense at the start
   Eigen::MatrixXd Gh(6, r);
