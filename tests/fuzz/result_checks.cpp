@@ -316,6 +316,11 @@ double problemSize(const Problem& p) {
     if (lengthValued(c.type))
       for (double b : {c.min, c.max})
         if (std::isfinite(b)) s = std::max(s, std::abs(b));
+  // No extent at all (every feature at one point, no length stated): no scale to be relative
+  // to. The solver's tolerance is then absolute (Tolerance::forScale floors the scale at 1), and
+  // so is the check — relative to 1e-300, a sample 0.3 along a free line overflowed to an
+  // infinite violation (regressions/no-extent-free-line.json).
+  if (s == 0.0) return 1.0;
   return std::isfinite(s) ? std::max(s, 1e-300) : 1e-300;
 }
 
