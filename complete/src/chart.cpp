@@ -280,15 +280,16 @@ void chartPose(const Chart& c, const std::array<double, 6>& theta, Matrix3d* R, 
   if (c.m > 0) {
     const EquationMatrix Y = c.Y.topLeftCorner(c.m, c.m);
     EquationVector e, step;
-    // the simplified step contracts on the slice (Krawczyk's test); then Newton for the last
-    // digits
-    for (int it = 0; it < 60; ++it) {
+    // the simplified step contracts on the slice (Krawczyk's test); Newton for the last digits
+    // only where it has not converged (its Jacobian costs several evaluations of the equations)
+    bool converged = false;
+    for (int it = 0; it < 60 && !converged; ++it) {
       equationsAt(c.equations, c.basis * z, &e);
       step = Y * e;
       z.tail(c.m) -= step;
-      if (step.lpNorm<Eigen::Infinity>() < 1e-15) break;
+      converged = step.lpNorm<Eigen::Infinity>() < 1e-15;
     }
-    for (int it = 0; it < 2; ++it) {
+    for (int it = 0; it < 2 && !converged; ++it) {
       EquationJacobian J;
       equationsAt(c.equations, c.basis * z, &e, &J);
       const EquationMatrix Js = J * c.basis.rightCols(c.m);
