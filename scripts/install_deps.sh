@@ -4,7 +4,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make ccache libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
       libbenchmark-dev libboost-dev libfcl-dev libcgal-dev python3
-      libslvs1-dev libnlopt-dev libsimdjson-dev)
+      libslvs1-dev libnlopt-dev libsimdjson-dev pybind11-dev python3-dev python3-numpy)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
