@@ -16,6 +16,7 @@
 #include "json_read.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "spec_document.hpp"
+#include "suggest.hpp"
 #include "utf8.hpp"
 
 namespace relpos {
@@ -50,9 +51,12 @@ class Parser {
   // the others: result[k] is the member named known[k], or nothing. (One pass, then O(1)
   // access: looking each key up would scan the members again for every key.) A key seen twice
   // is only noted here (see keysChecked).
+  // `unknown_error`: the message that makes an unknown member an error rather than a warning
+  // (a pose's: a mistyped key there would silently leave the identity).
   template <std::size_t N>
   std::array<Json, N> fields(const Json& obj, const Path& path,
-                             const std::array<std::string_view, N>& known) {
+                             const std::array<std::string_view, N>& known,
+                             const char* unknown_error = nullptr) {
     std::array<Json, N> found;
     if (!obj.is_object()) return found;
     std::vector<std::string_view> unknown;  // (allocates only when there are some)
@@ -68,7 +72,12 @@ class Parser {
         continue;
       }
       const Path field(path, key);
-      warn(field, "unknown field (ignored)");
+      const std::string hint =
+          detail::didYouMean(key, std::vector<std::string_view>(known.begin(), known.end()));
+      if (unknown_error)
+        error(field, unknown_error + hint);
+      else
+        warn(field, "unknown field (ignored)" + hint);
       unknown.push_back(key);
       const Json value(it.value());
       if (value.is_object() || value.is_array())
@@ -209,7 +218,9 @@ class Parser {
       return false;
     }
     enum { kPosition, kOrientation, kRpy, kMatrix };
-    const auto f = fields<4>(j, path, {"position", "orientation", "rpy", "matrix"});
+    const auto f = fields<4>(j, path, {"position", "orientation", "rpy", "matrix"},
+                             "unknown pose field (a pose has \"position\", \"orientation\", "
+                             "\"rpy\" or \"matrix\")");
     const Json &position = f[kPosition], &orientation = f[kOrientation], &rpy = f[kRpy],
                &matrix = f[kMatrix];
     if (matrix.present()) {
@@ -390,8 +401,10 @@ class Parser {
         return false;
       }
     }
+    std::vector<std::string_view> known;
+    for (const NamedFeature& nf : o.features) known.push_back(nf.name);
     error(path, "no feature '" + *name + "' on " + role + " object '" + o.name +
-                    "' (it has: " + featureList(o) + ")");
+                    "' (it has: " + featureList(o) + ")" + detail::didYouMean(*name, known));
     return false;
   }
 
@@ -447,8 +460,14 @@ class Parser {
       c->type = std::string(type_json.string());
       type = reg_.constraintType(c->type);
       if (!type) {
+        std::vector<std::string_view> names;
+        for (const ConstraintType& t : reg_.constraintTypes()) names.push_back(t.name);
+        const std::string near = detail::closestName(c->type, names);
         error(Path(path, "type"),
-              "unknown constraint type '" + c->type + "' (load the plugin that provides it)");
+              "unknown constraint type '" + c->type + "' (" +
+                  (near.empty() ? std::string("load the plugin that provides it")
+                                : "did you mean '" + near + "'? else load the plugin that provides it") +
+                  ")");
         ok = false;
       }
     }

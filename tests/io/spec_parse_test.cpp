@@ -335,6 +335,40 @@ TEST(SpecParse, UnknownFieldsAreWarnings) {
   EXPECT_EQ(r.warnings[0].path, "constraints[0].colour");
 }
 
+// Issue 17: what a user most likely meant, after what was wrong.
+TEST(SpecParse, MistypedNamesGetADidYouMean) {
+  ParseResult f = parse(
+      spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp", "orientaton": "either"})"));
+  ASSERT_TRUE(f.problem);
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_EQ(f.warnings[0].message, "unknown field (ignored); did you mean 'orientation'?");
+  expectError(spec(R"({"type": "coincidence", "fixed": "K", "mobile": "tcp"})"),
+              "constraints[0].type",
+              "unknown constraint type 'coincidence' (did you mean 'coincident'? else load the "
+              "plugin that provides it)");
+  expectError(spec(R"({"type": "Perpendicular", "fixed": "K", "mobile": "ax"})"),
+              "constraints[0].type", "did you mean 'perpendicular'?");
+  expectError(spec(R"({"type": "coincident", "fixed": "K", "mobile": "plam"})"),
+              "constraints[0].mobile", "(it has: tcp, palm, ax); did you mean 'palm'?");
+  // Nothing near: no guess.
+  ParseResult far = parse(spec(R"({"type": "welded", "fixed": "K", "mobile": "gripper_tip"})"));
+  ASSERT_EQ(far.errors.size(), 2u);
+  for (const auto& e : far.errors) EXPECT_EQ(e.message.find("did you mean"), std::string::npos);
+}
+
+// Issue 17: a pose with a key it does not know would otherwise be the identity, silently.
+TEST(SpecParse, AnUnknownPoseKeyIsAnError) {
+  std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
+  s.insert(s.find("\"features\": {\n    \"tcp\""), R"("pose": {"euler": [0, 0, 1]}, )");
+  expectError(s, "mobile.pose.euler",
+              "unknown pose field (a pose has \"position\", \"orientation\", \"rpy\" or "
+              "\"matrix\")");
+  std::string typo = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
+  typo.insert(typo.find("\"features\": {\n    \"tcp\""),
+              R"("pose": {"position": [1, 2, 3], "orientatoin": [0, 0, 0, 1]}, )");
+  expectError(typo, "mobile.pose.orientatoin", "did you mean 'orientation'?");
+}
+
 TEST(SpecParse, PluginListIsAPathListResolvedAgainstTheSpec) {
   std::string s = spec(R"({"type": "coincident", "fixed": "K", "mobile": "tcp"})");
   s.insert(s.find("\"fixed\""), R"("plugins": ["libsymmetric.so", "/opt/x.so", 3], )");
