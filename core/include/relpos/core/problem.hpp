@@ -42,6 +42,37 @@ struct InputConstraint {
   bool isRange() const { return !has_value; }
 };
 
+// One constraint for Problem::addConstraint, as a spec's constraint object says it (docs/spec.md
+// §1.8), built by chaining:
+//   problem.addConstraint(ConstraintSpec("distance", "table_top", "tcp").range(0.03, 0.09)
+//                             .id("height"));
+//   problem.addConstraint(ConstraintSpec("angle", "floor", "torch").atMost(0.6)
+//                             .orientation(Orientation::kEither));
+// Angles in radians. Without value(), range(), atLeast() or atMost() the value is 0, as the
+// other addConstraint's default (the types that take none, coincident, parallel, …, ignore it).
+class ConstraintSpec {
+ public:
+  ConstraintSpec(std::string type, std::string fixed_feature, std::string mobile_feature);
+  ConstraintSpec& value(double v);               // exact
+  ConstraintSpec& range(double min, double max);  // min <= max; min == max is value(min)
+  ConstraintSpec& atLeast(double min);            // one-sided: open above
+  ConstraintSpec& atMost(double max);             // one-sided: open below
+  ConstraintSpec& orientation(Orientation o);
+  // false: a line-line distance measured between skew lines (docs/spec.md §1.9).
+  ConstraintSpec& parallel(bool p);
+  ConstraintSpec& id(std::string id);
+
+ private:
+  friend struct Problem;
+  std::string type_, fixed_, mobile_, id_;
+  bool has_value_ = false, has_range_ = false;
+  double value_ = 0.0;
+  double min_ = -std::numeric_limits<double>::infinity();
+  double max_ = std::numeric_limits<double>::infinity();
+  Orientation orientation_ = Orientation::kAligned;
+  bool parallel_ = true;
+};
+
 struct Problem {
   std::string name;
   // The spec gave its angles in degrees (`"units": {"angle": "deg"}`): values are stored in
@@ -59,6 +90,11 @@ struct Problem {
   Problem& addConstraint(const std::string& type, const std::string& fixed_feature,
                          const std::string& mobile_feature, double value = 0.0,
                          Orientation orientation = Orientation::kAligned);
+  // The same with everything a spec's constraint may say: an exact value, a range, a one-sided
+  // range, orientation, parallel and id. std::invalid_argument on unknown feature names, a value
+  // or bound that is NaN (or an infinite exact value), a min above its max, and a value given
+  // both as exact and as a range.
+  Problem& addConstraint(const ConstraintSpec& spec);
   // Largest coordinate magnitude (the solver measures its tolerance on the centred constraint
   // geometry instead: core/src/centring.hpp).
   double lengthScale() const;
