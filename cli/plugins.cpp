@@ -10,10 +10,24 @@
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/io/text.hpp"
 #include "relpos/plugins/loader.hpp"
+#include "relpos/plugins/search.hpp"
 
 namespace fs = std::filesystem;
 
 namespace relpos::cli {
+
+namespace {
+
+// Where a plugin named by no file was looked for, for its message.
+std::string notFoundByName(const std::string& path, const std::vector<std::string>& folders) {
+  if (folders.empty()) return "";
+  std::string where;
+  for (const std::string& f : folders) where += (where.empty() ? "" : ", ") + f;
+  const std::string name = fs::path(path).filename().string();
+  return " (nor is " + name + ", " + name + ".so or relpos-" + name + ".so in " + where + ")";
+}
+
+}  // namespace
 
 // Loads, in order, the plugins of RELPOS_PLUGIN_PATH, of --plugin, and of the "plugins" lists of
 // the specs the command will read. The first failure is one line on stderr; false then.
@@ -59,9 +73,14 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   }
   relpos::plugins::LoadOptions options;
   options.allow_override = a.allow_override;
+  // A path that names no file is looked for by name beside relpos (docs/spec.md §4.1).
+  const std::vector<std::string> folders =
+      relpos::plugins::pluginFoldersFor(relpos::plugins::executableDir());
   for (const auto& item : items) {
     std::string error;
-    if (!relpos::plugins::loadPlugin(item.path, reg, &error, options)) {
+    const std::string path = relpos::plugins::findPlugin(item.path, folders);
+    if (!relpos::plugins::loadPlugin(path, reg, &error, options)) {
+      if (path == item.path && !fs::exists(path)) error += notFoundByName(path, folders);
       std::cerr << "relpos: " << oneLine(item.where + error) << "\n";
       return false;
     }

@@ -12,10 +12,13 @@ set_target_properties(relpos_complete PROPERTIES EXPORT_NAME complete)
 set_target_properties(relpos_plugin_sdk PROPERTIES EXPORT_NAME plugin)
 set_target_properties(relpos_plugin_loader PROPERTIES EXPORT_NAME plugin_loader)
 set_target_properties(relpos_conformance PROPERTIES EXPORT_NAME conformance)
+set_target_properties(relpos_collision PROPERTIES EXPORT_NAME collision)
+set_target_properties(relpos_report PROPERTIES EXPORT_NAME report)
 set_target_properties(relpos PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 
 install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_complete relpos_builtins
-                relpos_plugin_sdk relpos_plugin_loader relpos_conformance
+                relpos_plugin_sdk relpos_plugin_loader relpos_conformance relpos_collision
+                relpos_report
         EXPORT relpos-targets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -23,7 +26,7 @@ install(TARGETS relpos_core relpos_io relpos_rules relpos_manifolds relpos_compl
 install(TARGETS relpos RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS relpos_plugin_symmetric relpos_plugin_helical
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/relpos/plugins)
-foreach(folder core io rules manifolds complete builtins plugins)
+foreach(folder core io rules manifolds complete builtins plugins collision report)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/relpos
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()

@@ -22,6 +22,8 @@ from .problem import Problem
 __all__ = ["solve", "Solution", "Branch", "Problem", "SpecError", "load_plugin", "__version__"]
 
 __version__ = _relpos.__version__
+# Plugins named without a path are looked for beside the package (docs/spec.md section 4.1).
+_relpos.set_program_dir(os.path.dirname(os.path.abspath(__file__)))
 
 
 class SpecError(ValueError):
@@ -37,8 +39,9 @@ class SpecError(ValueError):
 
 
 def load_plugin(path):
-    """Loads a plugin library (docs/spec.md section 4) for every later solve; RuntimeError naming
-    the file when it cannot be loaded. A spec's own ``plugins`` list is loaded by the solve."""
+    """Loads a plugin library (docs/spec.md section 4) for every later solve: a path, or the name
+    of an installed one ("symmetric"); RuntimeError naming the file when it cannot be loaded. A
+    spec's own ``plugins`` list is loaded by the solve."""
     _relpos.load_plugin(os.fspath(path))
 
 

@@ -22,6 +22,7 @@
 #include "relpos/io/result_writer.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "relpos/plugins/loader.hpp"
+#include "relpos/plugins/search.hpp"
 #include "relpos/report/evaluate.hpp"
 
 namespace py = pybind11;
@@ -42,7 +43,10 @@ class Plugins {
   }
   // Loads `path` (after the ones loaded before); a RuntimeError naming it on failure, and then
   // nothing changes.
-  void load(const std::string& path) {
+  // The folder of the package, whose plugin folders a name is looked for in.
+  void setProgramDir(const std::string& dir) { folders_ = relpos::plugins::pluginFoldersFor(dir); }
+  void load(const std::string& name) {
+    const std::string path = relpos::plugins::findPlugin(name, folders_);
     for (const std::string& p : paths_)
       if (p == path) return;
     std::vector<std::string> paths = paths_;
@@ -70,7 +74,7 @@ class Plugins {
     reg->freeze();
     return reg;
   }
-  std::vector<std::string> paths_;
+  std::vector<std::string> paths_, folders_;
   std::shared_ptr<const relpos::Registry> registry_;
 };
 
@@ -315,5 +319,6 @@ PYBIND11_MODULE(_relpos, m) {
   m.def("solve_file", &solveFile);
   m.def("solve_text", &solveText);
   m.def("load_plugin", [](const std::string& path) { plugins().load(path); });
+  m.def("set_program_dir", [](const std::string& dir) { plugins().setProgramDir(dir); });
   m.def("loaded_plugins", []() { return plugins().paths(); });
 }

@@ -255,6 +255,32 @@ TEST(CliPlugins, PluginFlagLoadsItAndRulesShowItsOrigin) {
   EXPECT_NE(rules.out.find("  distance  [built-in]"), std::string::npos);
 }
 
+// Issue 17: a plugin named without its path is the one beside relpos (here the build tree's).
+TEST(CliPlugins, APluginIsFoundByItsName) {
+  const std::string origin = "[" + fs::canonical(kPluginDir + "/relpos-helical.so").string() + "]";
+  for (const char* name : {"helical", "relpos-helical", "relpos-helical.so"}) {
+    CmdResult rules = run(std::string("rules --plugin ") + name);
+    ASSERT_EQ(rules.code, 0) << name << ": " << rules.err;
+    EXPECT_NE(rules.out.find("  thread  " + origin), std::string::npos) << name;
+  }
+  // A spec's list by name too (not a file beside the spec).
+  fs::path d = scratchDir();
+  std::string spec = slurp(RELPOS_DATA_DIR "/plugins/symmetric-centred-grasp.json");
+  spec.insert(spec.find('{') + 1, R"("plugins": ["symmetric"], )");
+  std::ofstream(d / "named.json") << spec;
+  CmdResult r = run("solve " + (d / "named.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "solved");
+  // Neither a file nor a name: where it was looked for.
+  CmdResult none = run("rules --plugin nonesuch");
+  EXPECT_EQ(none.code, 2);
+  EXPECT_NE(none.err.find("relpos: nonesuch: no such plugin file (nor is nonesuch, nonesuch.so or "
+                          "relpos-nonesuch.so in " +
+                          fs::canonical(kPluginDir).string() + ")"),
+            std::string::npos)
+      << none.err;
+}
+
 TEST(CliPlugins, EnvironmentPathLoadsAFolder) {
   fs::path d = scratchDir();
   std::string cmd = "RELPOS_PLUGIN_PATH=/nonexistent-dir-is-skipped-not:" + kPluginDir + " " +

@@ -21,3 +21,13 @@ execute_process(COMMAND "${WORK_DIR}/build/sdk_check" RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the conformance kits failed on the out-of-tree plugins (${rc})")
 endif()
+execute_process(COMMAND "${WORK_DIR}/build/collision_check" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "collision filtering through the installed SDK failed (${rc})")
+endif()
+# The installed command finds the installed example plugins by name.
+execute_process(COMMAND "${WORK_DIR}/prefix/bin/relpos" rules --plugin helical
+                OUTPUT_VARIABLE rules RESULT_VARIABLE rc)
+if(rc OR NOT rules MATCHES "prefix/lib/relpos/plugins/relpos-helical.so")
+  message(FATAL_ERROR "the installed relpos did not find the installed plugin 'helical' (${rc})")
+endif()
