@@ -45,7 +45,12 @@ Args parseArgs(int argc, char** argv, int first) {
       a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
     else if (s == "--window")
       a.result.window = parseNonNegative(s, value());
-    else if (s == "--collision")
+    else if (s == "--angles") {
+      const std::string unit = value();
+      if (unit != "deg" && unit != "rad")
+        throw UsageError("--angles: expected deg or rad, got '" + unit + "'");
+      a.degrees = unit == "deg";
+    } else if (s == "--collision")
       a.collision = true;
     else if (s == "--clearance")
       a.result.clearance = parseNonNegative(s, value()), a.collision_option = true;

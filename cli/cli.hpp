@@ -25,6 +25,7 @@ struct Args {
   bool allow_override = false;
   bool collision = false;
   bool collision_option = false;  // --clearance or --collision-samples given
+  bool degrees = false;           // --angles deg
 };
 
 // The options after the command (argv[first]...). Throws UsageError.

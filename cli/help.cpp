@@ -14,6 +14,9 @@ constexpr Option kWindow{"--window W",
                          "unbounded length parameters are sampled within +-W of the nearest "
                          "pose's (default 1)"};
 constexpr Option kSeed{"--seed S", "the seed of the samples' generator (default 0)"};
+constexpr Option kAngles{"--angles deg|rad",
+                         "write the result's angles (angle parameters, rotation rates) in degrees "
+                         "or radians (default rad)"};
 constexpr Option kCollision{"--collision",
                             "filter each branch against the meshes (mobile.mesh, fixed.mesh, "
                             "obstacles): adds \"collision\" per branch and "
@@ -29,12 +32,13 @@ int cmdNone(const Args&, const Registry&) { return kExitOk; }
 
 const Command kCommands[] = {
     {"solve",
-     "solve SPEC.json [--samples N] [--window W] [--seed S] [-o OUT.json]\n"
+     "solve SPEC.json [--samples N] [--window W] [--seed S] [--angles deg] [-o OUT.json]\n"
      "               [--collision [--clearance C] [--collision-samples N]]",
      "Solves one spec and prints its result document (docs/spec.md §2), indented.",
      {kSamples,
       kWindow,
       kSeed,
+      kAngles,
       {"-o OUT.json", "write the result to OUT.json (replaced whole, only once it is complete)"},
       kCollision,
       kClearance,
@@ -71,6 +75,7 @@ const Command kCommands[] = {
       kSamples,
       kWindow,
       kSeed,
+      kAngles,
       kCollision,
       kClearance,
       kCollisionSamples},

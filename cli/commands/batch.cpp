@@ -140,13 +140,17 @@ Outcome run(const Input& input, const Item& item, const Args& a, const Registry&
     out.status = toString(sol.status);
     if (!a.collision) {
       evaluate(pb, sol, a.result, state.report);
-      writeReport(state.report, kResultLine, state.line);
+      ResultFormat line = kResultLine;
+      line.degrees = a.degrees;
+      writeReport(state.report, line, state.line);
     } else {
       std::vector<Diagnostic> errors, warnings;
       if (const auto scene =
               collision::buildScene(pb, input.meshDir(item), cache, &errors, &warnings)) {
         evaluate(pb, sol, a.result, state.report, scene.get());
-        writeReport(state.report, kCollisionLine, state.line);
+        ResultFormat line = kCollisionLine;
+        line.degrees = a.degrees;
+        writeReport(state.report, line, state.line);
         out.status = toString(state.report.status);
       } else {
         writeStatusLine(pb.name, "invalid", joined(input.source(item), errors), state.line);

@@ -38,7 +38,9 @@ int cmdSolve(const Args& a, const Registry& reg) {
     relpos::evaluate(pb, sol, a.result, report);
   }
   std::string text;
-  relpos::writeReport(report, relpos::kResultDocument, text);
+  relpos::ResultFormat format = relpos::kResultDocument;
+  format.degrees = a.degrees;
+  relpos::writeReport(report, format, text);
   text += '\n';
   if (!a.out.empty()) {
     replaceFile(a.out, text);

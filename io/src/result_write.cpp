@@ -13,6 +13,23 @@
 #include "utf8.hpp"
 
 namespace relpos {
+
+const char* toString(ParameterMotion::Type t) {
+  switch (t) {
+    case ParameterMotion::Type::kRotation:
+      return "rotation";
+    case ParameterMotion::Type::kTranslation:
+      return "translation";
+    case ParameterMotion::Type::kScrew:
+      return "screw";
+    case ParameterMotion::Type::kUnknown:
+      return "unknown";
+    case ParameterMotion::Type::kNone:
+      break;
+  }
+  return "none";
+}
+
 namespace {
 
 // Appends into a string used as a raw buffer (sized ahead, trimmed at the end): a line is a few
@@ -198,9 +215,12 @@ Eigen::Vector4d orientationOf(const Isometry3d& X) {
 
 // The one pose writer: parameters, position, orientation — inside an object the caller opened
 // (and closes, after any fields of its own such as "distance").
-void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof) {
+// Each parameter's unit factor: 180/π for an angle parameter written in degrees, else 1.
+using Units = std::array<double, kMaxDof>;
+
+void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof, const Units& u) {
   w.key("parameters");
-  w.list(static_cast<std::size_t>(dof), [&](std::size_t i) { w.number(theta[i]); });
+  w.list(static_cast<std::size_t>(dof), [&](std::size_t i) { w.number(theta[i] * u[i]); });
   const Vector3d t = X.translation();
   w.key("position");
   w.list(3, [&](std::size_t i) { w.number(t[static_cast<Eigen::Index>(i)]); });
@@ -209,15 +229,16 @@ void writePose(Writer& w, const Isometry3d& X, const Params& theta, int dof) {
   w.list(4, [&](std::size_t i) { w.number(q[static_cast<Eigen::Index>(i)]); });
 }
 
-void writeNearest(Writer& w, const NearestPose& n, int dof) {
+void writeNearest(Writer& w, const NearestPose& n, int dof, const Units& u) {
   w.beginObject();
-  writePose(w, n.pose, n.parameters, dof);
+  writePose(w, n.pose, n.parameters, dof, u);
   w.key("distance");
   w.number(n.distance);
   w.endObject();
 }
 
-void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int dof) {
+void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int dof,
+                    const Units& u) {
   w.beginObject();
   w.key("checked_against");
   w.list(r.checked_against.size(), [&](std::size_t i) { w.string(r.checked_against[i]); });
@@ -236,7 +257,7 @@ void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int do
   });
   w.key("nearest_free");
   if (c.has_nearest_free) {
-    writeNearest(w, c.nearest_free, dof);
+    writeNearest(w, c.nearest_free, dof, u);
   } else {
     w.null();
     w.key("nearest_free_reason");
@@ -245,7 +266,7 @@ void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int do
   w.key("free_samples");
   w.list(c.free_samples.size(), [&](std::size_t i) {
     w.beginObject();
-    writePose(w, c.free_samples[i].pose, c.free_samples[i].parameters, dof);
+    writePose(w, c.free_samples[i].pose, c.free_samples[i].parameters, dof, u);
     w.endObject();
   });
   w.key("blocked_samples");
@@ -253,8 +274,47 @@ void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int do
   w.endObject();
 }
 
-void writeBranch(Writer& w, const Report& r, std::size_t b) {
+// A parameter's motion (docs/spec.md §2.5): its type alone when it moves nothing or is unknown.
+// `deg`: 180/π when angles are written in degrees (1 otherwise), `unit` the parameter's own
+// factor.
+void writeMotion(Writer& w, const ParameterMotion& m, double deg, double unit) {
+  if (m.type == ParameterMotion::Type::kNone || m.type == ParameterMotion::Type::kUnknown) {
+    w.beginObject();
+    w.key("type");
+    w.string(toString(m.type));
+    return w.endObject();
+  }
+  auto vec = [&](const Vector3d& v) {
+    w.list(3, [&](std::size_t i) { w.number(v[static_cast<Eigen::Index>(i)]); });
+  };
+  w.beginObject();
+  w.key("type");
+  w.string(toString(m.type));
+  if (m.type == ParameterMotion::Type::kTranslation) {
+    w.key("direction");
+    vec(m.axis);
+  } else {
+    w.key("axis");
+    vec(m.axis);
+    w.key("point");
+    vec(m.point);
+  }
+  const bool turns = m.type != ParameterMotion::Type::kTranslation;
+  if (m.type == ParameterMotion::Type::kScrew) {
+    w.key("pitch");
+    w.number(m.pitch / deg);  // length per radian, or per degree
+  }
+  w.key("rate");
+  w.number(m.rate * (turns ? deg : 1.0) / unit);
+  w.endObject();
+}
+
+void writeBranch(Writer& w, const Report& r, std::size_t b, bool degrees) {
   const BranchReport& br = r.branches[b];
+  const double deg = degrees ? 180.0 / kPi : 1.0;
+  Units u;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    u[i] = static_cast<int>(i) < br.dof && br.parameters[i].kind == ParamKind::kAngle ? deg : 1.0;
   w.beginObject();
   w.key("dof");
   w.integer(br.dof);
@@ -272,7 +332,7 @@ void writeBranch(Writer& w, const Report& r, std::size_t b) {
     w.key("radius");
     w.number(br.certified.radius);
     w.key("angle");
-    w.number(br.certified.angle);
+    w.number(br.certified.angle * deg);
     w.endObject();
   }
   w.key("parameters");
@@ -284,27 +344,38 @@ void writeBranch(Writer& w, const Report& r, std::size_t b) {
     w.key("kind");
     w.string(toString(p.kind));
     w.key("min");
-    w.number(p.min);
+    w.number(p.min * u[i]);
     w.key("max");
-    w.number(p.max);
+    w.number(p.max * u[i]);
     w.key("periodic");
     w.boolean(p.periodic);
+    w.key("motion");
+    writeMotion(w, br.motions[i], deg, u[i]);
+    const ParameterMotion& mo = br.motions[i];
+    if (mo.constraint >= 0) {
+      w.key("constraint");
+      w.integer(mo.constraint);
+      if (!mo.constraint_id.empty()) {
+        w.key("constraint_id");
+        w.string(mo.constraint_id);
+      }
+    }
     w.endObject();
   });
   w.key("nearest");
-  writeNearest(w, br.nearest, br.dof);
+  writeNearest(w, br.nearest, br.dof, u);
   if (br.sample_count > 0) {
     w.key("samples");
     const SamplePose* samples = r.samplesOf(b);
     w.list(br.sample_count, [&](std::size_t i) {
       w.beginObject();
-      writePose(w, samples[i].pose, samples[i].parameters, br.dof);
+      writePose(w, samples[i].pose, samples[i].parameters, br.dof, u);
       w.endObject();
     });
   }
   if (r.collision_checked && b < r.collision.size()) {
     w.key("collision");
-    writeCollision(w, r, r.collision[b], br.dof);
+    writeCollision(w, r, r.collision[b], br.dof, u);
   }
   w.endObject();
 }
@@ -319,6 +390,13 @@ void writeReport(const Report& r, ResultFormat format, std::string& out) {
   w.integer(1);
   w.key("name");
   w.string(r.name);
+  if (format.degrees) {
+    w.key("units");
+    w.beginObject();
+    w.key("angle");
+    w.string("deg");
+    w.endObject();
+  }
   w.key("status");
   w.string(toString(r.status));
   w.key("complete");
@@ -328,7 +406,7 @@ void writeReport(const Report& r, ResultFormat format, std::string& out) {
   w.key("message");
   w.string(r.message);
   w.key("branches");
-  w.list(r.branches.size(), [&](std::size_t b) { writeBranch(w, r, b); });
+  w.list(r.branches.size(), [&](std::size_t b) { writeBranch(w, r, b, format.degrees); });
   w.key("best");
   r.best >= 0 ? w.integer(r.best) : w.null();
   w.key("conflicts");

@@ -52,8 +52,12 @@ def _json_default(value):
     raise TypeError(f"{type(value).__name__} is not a JSON value")
 
 
-def _solve(spec, samples, window, seed, collision, clearance, collision_samples, base_dir):
+def _solve(spec, samples, window, seed, collision, clearance, collision_samples, base_dir,
+           angles="rad"):
+    if angles not in ("rad", "deg"):
+        raise ValueError(f"angles: expected 'deg' or 'rad', got {angles!r}")
     options = _relpos.SolveOptions()
+    options.degrees = angles == "deg"
     options.samples = int(samples)
     options.window = float(window)
     options.seed = int(seed)
@@ -80,13 +84,14 @@ def _solve(spec, samples, window, seed, collision, clearance, collision_samples,
 
 
 def solve(spec, samples=0, collision=False, *, window=1.0, seed=0, clearance=0.0,
-          collision_samples=64, base_dir=None):
+          collision_samples=64, base_dir=None, angles="rad"):
     """Solves a spec (a path or a dict) and returns the result document of ``relpos solve`` as a
     dict. ``samples``: poses per branch; ``collision``: filter against the meshes (paths relative
-    to the spec file, or to ``base_dir`` for a dict, default the current folder); the other
-    options are the command line's (docs/spec.md section 3.2)."""
+    to the spec file, or to ``base_dir`` for a dict, default the current folder); ``angles``:
+    "deg" writes the document's angles in degrees; the other options are the command line's
+    (docs/spec.md section 3.2)."""
     solved = _solve(spec, samples, window, seed, collision, clearance, collision_samples,
-                    base_dir)
+                    base_dir, angles)
     return json.loads(solved.json)
 
 

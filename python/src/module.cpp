@@ -114,6 +114,7 @@ struct SolveOptions {
   bool collision = false;
   double clearance = 0.0;
   int collision_samples = 64;
+  bool degrees = false;  // the document's angles in degrees (angles="deg")
 };
 
 // A solved spec: the problem, the solution, its report and the result document, kept together
@@ -165,7 +166,9 @@ py::tuple solveParsed(relpos::ParseResult r, const std::string& spec_dir,
     } else {
       relpos::evaluate(s->problem, s->solution, ro, s->report);
     }
-    if (scene_errors.empty()) relpos::writeReport(s->report, relpos::kResultDocument, s->json);
+    relpos::ResultFormat format = relpos::kResultDocument;
+    format.degrees = o.degrees;
+    if (scene_errors.empty()) relpos::writeReport(s->report, format, s->json);
   }
   for (const auto& w : scene_warnings) warnings.append(py::make_tuple(w.path, w.message));
   if (!scene_errors.empty()) return py::make_tuple(py::none(), diagnostics(scene_errors), warnings);
@@ -299,7 +302,8 @@ PYBIND11_MODULE(_relpos, m) {
       .def_readwrite("seed", &SolveOptions::seed)
       .def_readwrite("collision", &SolveOptions::collision)
       .def_readwrite("clearance", &SolveOptions::clearance)
-      .def_readwrite("collision_samples", &SolveOptions::collision_samples);
+      .def_readwrite("collision_samples", &SolveOptions::collision_samples)
+      .def_readwrite("degrees", &SolveOptions::degrees);
   py::class_<Solved, std::shared_ptr<Solved>>(m, "Solved")
       .def_readonly("json", &Solved::json)
       .def_property_readonly("branch_count", &Solved::branchCount)

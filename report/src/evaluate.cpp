@@ -7,6 +7,7 @@
 
 #include "relpos/collision/branch_filter.hpp"
 #include "relpos/core/solver.hpp"
+#include "parameter_motion.hpp"
 #include "relpos/io/result_writer.hpp"
 
 namespace relpos {
@@ -60,6 +61,7 @@ void evaluateBranches(const Problem& problem, const Solution& solution, const Re
     br.certified = branch.certified;
     for (int i = 0; i < br.dof; ++i) br.parameters[static_cast<std::size_t>(i)] = m.parameter(i);
     br.nearest = nearestOnBranch(branch, problem.mobile.pose);
+    detail::parameterMotions(problem, branch, br.nearest.parameters, br.motions);
     if (br.nearest.distance < best_d) best_d = br.nearest.distance, r.best = static_cast<int>(b);
     br.first_sample = r.samples.size();
     br.sample_count = opt.samples > 0 ? static_cast<std::size_t>(opt.samples) : 0;

@@ -54,6 +54,51 @@ TEST(Cli, InconsistentNamesConstraintsAndTheirIds) {
   EXPECT_NE(msg.find("(constraints 0 = 'P on A', 1 = 'Q on B')"), std::string::npos) << msg;
 }
 
+// Issue 17: --angles deg writes every angle in degrees and nothing else differently.
+TEST(Cli, AnglesInDegrees) {
+  const std::string spec = RELPOS_DATA_DIR "/scenarios/scenario-b-seam-welding.json";
+  CmdResult rad = run("solve " + spec + " --samples 2"), deg = run("solve " + spec +
+                                                                    " --samples 2 --angles deg");
+  ASSERT_EQ(rad.code, 0) << rad.err;
+  ASSERT_EQ(deg.code, 0) << deg.err;
+  const nlohmann::json a = nlohmann::json::parse(rad.out), b = nlohmann::json::parse(deg.out);
+  EXPECT_FALSE(a.contains("units"));
+  EXPECT_EQ(b["units"]["angle"], "deg");
+  const double k = 180.0 / M_PI;
+  ASSERT_EQ(a["branches"].size(), b["branches"].size());
+  for (std::size_t i = 0; i < a["branches"].size(); ++i) {
+    const nlohmann::json &x = a["branches"][i], &y = b["branches"][i];
+    for (std::size_t j = 0; j < x["parameters"].size(); ++j) {
+      const bool angle = x["parameters"][j]["kind"] == "angle";
+      const double f = angle ? k : 1.0;
+      for (const char* bound : {"min", "max"})
+        EXPECT_NEAR(y["parameters"][j][bound].get<double>(),
+                    x["parameters"][j][bound].get<double>() * f, 1e-9);
+      EXPECT_NEAR(y["nearest"]["parameters"][j].get<double>(),
+                  x["nearest"]["parameters"][j].get<double>() * f, 1e-9);
+      for (std::size_t s = 0; s < 2; ++s)
+        EXPECT_NEAR(y["samples"][s]["parameters"][j].get<double>(),
+                    x["samples"][s]["parameters"][j].get<double>() * f, 1e-9);
+      // a turn's rate: per degree of an angle parameter as per radian (1), per length unit in
+      // degrees
+      const nlohmann::json &mx = x["parameters"][j]["motion"], &my = y["parameters"][j]["motion"];
+      const double rate_f = (mx["type"] == "rotation" ? k : 1.0) / f;
+      EXPECT_NEAR(my["rate"].get<double>(), mx["rate"].get<double>() * rate_f, 1e-9);
+    }
+    EXPECT_EQ(x["nearest"]["position"], y["nearest"]["position"]);
+    EXPECT_EQ(x["nearest"]["orientation"], y["nearest"]["orientation"]);
+    EXPECT_EQ(x["nearest"]["distance"], y["nearest"]["distance"]);
+  }
+  CmdResult bad = run("solve " + spec + " --angles grad");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--angles: expected deg or rad, got 'grad'"), std::string::npos) << bad.err;
+  // the batch's lines too
+  CmdResult lines = run("batch " RELPOS_DATA_DIR "/scenarios --angles deg --jobs 1");
+  ASSERT_EQ(lines.code, 0) << lines.err;
+  EXPECT_EQ(nlohmann::json::parse(lines.out.substr(0, lines.out.find('\n')))["units"]["angle"],
+            "deg");
+}
+
 TEST(Cli, SameSeedSameSamples) {
   CmdResult a = run("solve " + kExample + " --samples 4 --seed 9");
   CmdResult b = run("solve " + kExample + " --samples 4 --seed 9");
@@ -279,6 +324,20 @@ TEST(CliPlugins, APluginIsFoundByItsName) {
                           fs::canonical(kPluginDir).string() + ")"),
             std::string::npos)
       << none.err;
+}
+
+// Issue 17: a plugin's parameter says what it moves too — the thread's turn is a screw about
+// the hole's axis advancing the spec's pitch per turn.
+TEST(CliPlugins, APluginsParameterIsAScrewAlongItsAxis) {
+  CmdResult r = run("solve " RELPOS_DATA_DIR "/plugins/helical-screw-insertion.json --plugin helical");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json motion = nlohmann::json::parse(r.out)["branches"][0]["parameters"][0]["motion"];
+  EXPECT_EQ(motion["type"], "screw");
+  EXPECT_NEAR(std::abs(motion["axis"][2].get<double>()), 1.0, 1e-9);
+  EXPECT_NEAR(motion["point"][0].get<double>(), 0.2, 1e-9);  // the hole's axis, x = 0.2, y = 0.1
+  EXPECT_NEAR(motion["point"][1].get<double>(), 0.1, 1e-9);
+  // 1.25 mm per turn, and the screw advances into the hole (direction 0 0 -1) as it turns
+  EXPECT_NEAR(std::abs(motion["pitch"].get<double>()), 0.00125 / (2 * M_PI), 1e-12);
 }
 
 TEST(CliPlugins, EnvironmentPathLoadsAFolder) {

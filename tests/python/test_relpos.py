@@ -76,6 +76,15 @@ class SolveTest(unittest.TestCase):
         self.assertTrue(any("collision" in b for b in got["branches"]))
         self.assertEqual(len(got["branches"][0]["samples"]), 3)
 
+    def test_angles_in_degrees_as_the_command_line_writes_them(self):
+        path = os.path.join(SOURCE, "data", "scenarios", "scenario-b-seam-welding.json")
+        got = relpos.solve(path, samples=2, angles="deg")
+        self.assertEqual(without_timing(got),
+                         without_timing(cli_result(path, "--samples", "2", "--angles", "deg")))
+        self.assertEqual(got["units"], {"angle": "deg"})
+        with self.assertRaises(ValueError):
+            relpos.solve(path, angles="grad")
+
     def test_a_dict_is_solved_as_the_same_spec_in_a_file(self):
         for path in spec_files("scenarios"):
             with open(path) as f:

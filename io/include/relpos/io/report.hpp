@@ -38,6 +38,24 @@ struct CollisionReport {
   int blocked_samples = 0;
 };
 
+// What one parameter moves, in world terms (docs/spec.md §2.5, since issue 17): the motion of
+// X_WM(θ) as that parameter alone changes, at the branch's nearest pose. Every such motion is a
+// screw (Chasles): a rotation when it does not advance along its axis, a translation when it does
+// not turn.
+struct ParameterMotion {
+  // kNone: the pose does not move (a degenerate parameter, e.g. the turn about a circle of
+  // radius 0); kUnknown: a plugin's pose function threw beside the nearest pose.
+  enum class Type : unsigned char { kNone, kRotation, kTranslation, kScrew, kUnknown };
+  Type type = Type::kNone;
+  Vector3d axis{0, 0, 0};    // unit: the axis of a rotation or screw, a translation's direction
+  Vector3d point{0, 0, 0};   // rotation, screw: the point of the axis nearest the mobile origin
+  double pitch = 0.0;        // screw: length advanced along the axis per radian turned
+  double rate = 0.0;         // radians (rotation, screw) or length (translation) per unit of θ_i
+  int constraint = -1;       // a range parameter: the input constraint whose range it spans
+  std::string constraint_id;  // and that constraint's id ("" when it has none)
+};
+const char* toString(ParameterMotion::Type t);
+
 struct BranchReport {
   int dof = 0;
   int rotational_dof = -1;  // -1 for a mixed manifold (written as null), with translational_dof
@@ -46,6 +64,7 @@ struct BranchReport {
   bool exact = true;      // Branch::exact: a closed form; false: found numerically, `certified`
   Certificate certified;  // Branch::certified (zero for an exact branch)
   std::array<Parameter, kMaxDof> parameters{};
+  std::array<ParameterMotion, kMaxDof> motions{};
   NearestPose nearest;           // the branch's pose nearest the initial pose
   std::size_t first_sample = 0;  // its samples: Report::samples[first_sample, + sample_count)
   std::size_t sample_count = 0;

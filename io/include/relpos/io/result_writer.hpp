@@ -19,6 +19,10 @@ struct ResultFormat {
   //          it had its own writer (solve's, and batch lines with collision fields), kept
   //          byte-identical.
   bool library_numbers = false;
+  // Angles in degrees (`--angles deg`, docs/spec.md §2.5, since issue 17): angle parameters'
+  // values and bounds, rotation rates and pitches, a certificate's angle; the document then
+  // says "units": {"angle": "deg"}. Orientations stay quaternions, `distance` the metric.
+  bool degrees = false;
 };
 inline constexpr ResultFormat kResultLine{false, false};
 inline constexpr ResultFormat kCollisionLine{false, true};
