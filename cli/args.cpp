@@ -45,6 +45,8 @@ Args parseArgs(int argc, char** argv, int first) {
       a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
     else if (s == "--window")
       a.result.window = parseNonNegative(s, value());
+    else if (s == "--format")
+      a.format = value();
     else if (s == "--angles") {
       const std::string unit = value();
       if (unit != "deg" && unit != "rad")

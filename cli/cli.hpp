@@ -26,6 +26,7 @@ struct Args {
   bool collision = false;
   bool collision_option = false;  // --clearance or --collision-samples given
   bool degrees = false;           // --angles deg
+  std::string format;             // export: --format
 };
 
 // The options after the command (argv[first]...). Throws UsageError.
@@ -62,5 +63,6 @@ int cmdSolve(const Args& a, const relpos::Registry& reg);
 int cmdRules(const Args& a, const relpos::Registry& reg);
 int cmdTable(const Args& a, const relpos::Registry& reg);
 int cmdBatch(const Args& a, const relpos::Registry& reg);
+int cmdExport(const Args& a, const relpos::Registry& reg);
 
 }  // namespace relpos::cli

@@ -41,7 +41,7 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
       items.push_back({p, "RELPOS_PLUGIN_PATH: "});
   for (const auto& p : a.plugins) items.push_back({p, ""});
   std::vector<std::string> specs;
-  if (cmd == "solve" && a.positional.size() == 1) specs = a.positional;
+  if ((cmd == "solve" || cmd == "export") && a.positional.size() == 1) specs = a.positional;
   const bool batch = cmd == "batch" && a.positional.size() == 1;
   if ((cmd == "table" || (cmd == "rules" && a.coverage) ||
        (batch && fs::is_directory(a.positional[0]))) &&

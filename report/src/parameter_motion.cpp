@@ -11,46 +11,38 @@ namespace relpos {
 namespace detail {
 namespace {
 
-// The twist of X(θ) along parameter i: the world angular velocity ω and the velocity ṗ of the
-// mobile origin. Central differences of step h within the bounds (a bound reached: one-sided);
-// an error of O(h²), 1e-12 relative, far below what the motion is used for.
-bool twist(const Manifold& m, const Params& at, int i, Vector3d* omega, Vector3d* pdot) {
-  const Parameter p = m.parameter(i);
-  const double h = 1e-6 * (1.0 + std::abs(at[i]));
-  Params a = at, b = at;
-  a[i] = at[i] - h;
-  b[i] = at[i] + h;
-  if (!p.periodic) a[i] = std::max(a[i], p.min), b[i] = std::min(b[i], p.max);
-  const double span = b[i] - a[i];
-  if (!(span > 0.5 * h)) return false;  // a parameter pinned by its bounds
-  const Isometry3d Xa = m.pose(a), Xb = m.pose(b);
-  const Eigen::AngleAxisd turn(Matrix3d(Xb.linear() * Xa.linear().transpose()));
-  *omega = turn.axis() * (turn.angle() / span);
-  *pdot = (Xb.translation() - Xa.translation()) / span;
-  return omega->allFinite() && pdot->allFinite();
-}
+}  // namespace
 
-ParameterMotion motionOf(const Vector3d& omega, const Vector3d& pdot, const Vector3d& origin,
-                         double scale) {
+ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double span,
+                             const Vector3d& origin, double scale) {
   ParameterMotion mo;
-  const double w = omega.norm();
-  // Below these a motion is rounding: 1e-9 rad or length (relative to the problem's size) per
-  // unit of the parameter against the 1e-12 of the differences.
-  if (w < 1e-9) {
-    const double v = pdot.norm();
-    if (v < 1e-9 * scale) return mo;
+  // Xb = M·Xa with M = [R, t] a rigid motion: a screw (Chasles) of angle φ about a line.
+  const Matrix3d R = Xb.linear() * Xa.linear().transpose();
+  const Vector3d t = Xb.translation() - R * Xa.translation();
+  const Eigen::AngleAxisd turn(R);
+  const double phi = turn.angle();
+  if (!std::isfinite(phi) || !t.allFinite() || !(span > 0.0)) return mo;
+  // Below these a motion is rounding: 1e-9 rad, or 1e-9 of the problem's size, per unit of the
+  // parameter.
+  if (phi < 1e-9 * span) {
+    const double v = t.norm() / span;
+    if (!(v >= 1e-9 * scale)) return mo;
     mo.type = ParameterMotion::Type::kTranslation;
-    mo.axis = pdot / v;
+    mo.axis = t.normalized();
     mo.rate = v;
     return mo;
   }
-  mo.axis = omega / w;
-  mo.rate = w;
-  // The velocity of the world point at the mobile origin is ṗ = ω × (origin − q) + pitch·ω for a
-  // point q of the axis: q is the origin moved by ω × ṗ / |ω|² (then nearest the origin).
-  mo.point = origin + omega.cross(pdot) / (w * w);
-  mo.pitch = omega.dot(pdot) / (w * w);
-  if (std::abs(mo.pitch) < 1e-9 * scale) {
+  const Vector3d a = turn.axis();
+  mo.axis = a;
+  mo.rate = phi / span;
+  // t = (I − R)·q + d·a for a point q of the axis and an advance d along it; in the plane
+  // across the axis, q = ½ (t⊥ + cot(φ/2) a × t⊥) (the point the turn leaves in place).
+  const double d = t.dot(a);
+  const Vector3d perp = t - d * a;
+  const Vector3d q = 0.5 * (perp + a.cross(perp) / std::tan(0.5 * phi));
+  mo.point = q + (origin - q).dot(a) * a;  // the axis point nearest the origin
+  mo.pitch = d / phi;
+  if (std::abs(d) < 1e-9 * scale * span) {
     mo.type = ParameterMotion::Type::kRotation;
     mo.pitch = 0.0;
   } else {
@@ -58,6 +50,21 @@ ParameterMotion motionOf(const Vector3d& omega, const Vector3d& pdot, const Vect
   }
   return mo;
 }
+
+ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step,
+                            double scale) {
+  const Parameter p = m.parameter(i);
+  const double h = step * (1.0 + std::abs(at[i]));
+  Params a = at, b = at;
+  a[i] = at[i] - h;
+  b[i] = at[i] + h;
+  if (!p.periodic) a[i] = std::max(a[i], p.min), b[i] = std::min(b[i], p.max);
+  const double span = b[i] - a[i];
+  if (!(span > 0.5 * h)) return ParameterMotion();  // a parameter pinned by its bounds
+  return screwBetween(m.pose(a), m.pose(b), span, m.pose(at).translation(), scale);
+}
+
+namespace {
 
 // The ranged input constraint among the branch's sources whose range parameter this is: a
 // parameter named as docs/spec.md §1.10 names them, of the constraint's kind (angle or length),
@@ -92,16 +99,15 @@ int rangeConstraint(const Problem& problem, const Branch& branch, const Paramete
 void parameterMotions(const Problem& problem, const Branch& branch, const Params& at,
                       std::array<ParameterMotion, kMaxDof>& out) {
   const Manifold& m = *branch.manifold;
-  const Vector3d origin = m.pose(at).translation();
+  m.pose(at);  // a throw at the nearest pose itself is let through
   const double scale = std::max(1.0, problem.lengthScale());
   for (int i = 0; i < m.dof(); ++i) {
     ParameterMotion& mo = out[static_cast<std::size_t>(i)];
-    Vector3d omega, pdot;
     ParameterMotion found;
     // A plugin's pose function that throws beside the nearest pose leaves the motion unknown;
     // the stage that needs those poses (samples, the collision filter) reports it.
     try {
-      if (twist(m, at, i, &omega, &pdot)) found = motionOf(omega, pdot, origin, scale);
+      found = motionAlong(m, at, i, 1e-6, scale);
     } catch (const std::exception&) {
       found.type = ParameterMotion::Type::kUnknown;
     }

@@ -16,4 +16,15 @@ namespace relpos::detail {
 void parameterMotions(const Problem& problem, const Branch& branch, const Params& at,
                       std::array<ParameterMotion, kMaxDof>& out);
 
+// The screw taking pose Xa to Xb, per unit of a parameter that changed by `span`: exact for a
+// rigid motion whatever its size (a turn's axis point the one nearest `origin`). `scale`: the
+// problem's size, below 1e-9 of which an advance is rounding.
+ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double span,
+                             const Vector3d& origin, double scale);
+
+// The motion of parameter i of m about `at`, between the poses `step` (relative) to either side
+// within its bounds: what the report writes (step 1e-6), and exactly the parameter's screw
+// whatever the step when the parameter turns about a fixed line or slides along a fixed direction.
+ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale);
+
 }  // namespace relpos::detail

@@ -99,6 +99,38 @@ TEST(Cli, AnglesInDegrees) {
             "deg");
 }
 
+// Issue 17: relpos export --format tsr writes a chain per branch (checked pose by pose in
+// tests/report/tsr_test.cpp), or null with the reason.
+TEST(Cli, ExportWritesTsrChains) {
+  fs::path d = scratchDir();
+  const std::string out = (d / "tsr.json").string();
+  CmdResult r = run("export " RELPOS_DATA_DIR "/scenarios/scenario-d-soda-can-grasp.json "
+                    "--format tsr -o " + out);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(slurp(out));
+  EXPECT_EQ(doc["format"], "tsr");
+  EXPECT_EQ(doc["status"], "solved");
+  ASSERT_EQ(doc["branches"].size(), 2u);
+  for (const auto& b : doc["branches"]) {
+    ASSERT_TRUE(b["exact"].get<bool>()) << b.dump();
+    for (const auto& link : b["tsr_chain"]) {
+      EXPECT_EQ(link["T0_w"].size(), 4u);
+      EXPECT_EQ(link["Tw_e"][3], nlohmann::json({0.0, 0.0, 0.0, 1.0}));
+      ASSERT_EQ(link["Bw"].size(), 6u);
+      for (const auto& row : link["Bw"]) EXPECT_LE(row[0].get<double>(), row[1].get<double>());
+    }
+  }
+  // A branch without a chain says why.
+  CmdResult c = run("export " RELPOS_DATA_DIR "/scenarios/scenario-c-cylinder-grasp.json --format tsr");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const nlohmann::json cdoc = nlohmann::json::parse(c.out);
+  EXPECT_TRUE(cdoc["branches"][0]["tsr_chain"].is_null());
+  EXPECT_FALSE(cdoc["branches"][0]["why"].get<std::string>().empty());
+  CmdResult bad = run("export " RELPOS_DATA_DIR "/scenarios/scenario-c-cylinder-grasp.json --format urdf");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--format: expected tsr, got 'urdf'"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, SameSeedSameSamples) {
   CmdResult a = run("solve " + kExample + " --samples 4 --seed 9");
   CmdResult b = run("solve " + kExample + " --samples 4 --seed 9");

@@ -1,0 +1,84 @@
+// relpos export (docs/spec.md §3.11): a spec's branches in a planner's terms — TSR chains.
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli.hpp"
+#include "output_file.hpp"
+#include "relpos/core/solver.hpp"
+#include "relpos/report/tsr.hpp"
+
+namespace relpos::cli {
+namespace {
+
+nlohmann::json matrix(const relpos::Isometry3d& X) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 4; ++r) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int c = 0; c < 4; ++c) row.push_back(X.matrix()(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+nlohmann::json tsrBranch(const relpos::Problem& pb, const relpos::Branch& b, std::size_t index,
+                         double window) {
+  nlohmann::json j;
+  j["index"] = index;
+  j["manifold"] = b.manifold->describe();
+  j["dof"] = b.manifold->dof();
+  const relpos::NearestPose near = relpos::nearestOnBranch(b, pb.mobile.pose);
+  relpos::TsrExport e;
+  if (b.exact)
+    e = relpos::tsrChainOf(pb, b, near.parameters, window);
+  else
+    e.why = "a numeric branch (a certified chart of a piece of the set), not a closed form";
+  j["exact"] = e.exact;
+  if (!e.exact) {
+    j["tsr_chain"] = nullptr;
+    j["why"] = e.why;
+    return j;
+  }
+  nlohmann::json chain = nlohmann::json::array();
+  for (const relpos::TsrLink& l : e.chain) {
+    nlohmann::json bw = nlohmann::json::array();
+    for (const auto& row : l.Bw) bw.push_back({row[0], row[1]});
+    chain.push_back({{"T0_w", matrix(l.T0_w)}, {"Tw_e", matrix(l.Tw_e)}, {"Bw", bw}});
+  }
+  j["tsr_chain"] = chain;
+  if (e.windowed) j["window"] = window;
+  return j;
+}
+
+}  // namespace
+
+int cmdExport(const Args& a, const Registry& reg) {
+  if (a.positional.size() != 1) throw UsageError("export takes exactly one spec file");
+  if (a.format != "tsr")
+    throw UsageError(a.format.empty() ? "export needs --format tsr"
+                                      : "--format: expected tsr, got '" + a.format + "'");
+  if (!a.out.empty()) checkOutput(a.out, a.positional, OutputMode::kReplace);
+  relpos::Problem pb;
+  if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
+  const relpos::Solution sol = relpos::solve(pb, reg);
+  nlohmann::json doc;
+  doc["relpos"] = 1;
+  doc["name"] = pb.name;
+  doc["format"] = a.format;
+  doc["status"] = relpos::toString(sol.status);
+  doc["message"] = sol.message;
+  nlohmann::json branches = nlohmann::json::array();
+  for (std::size_t i = 0; i < sol.branches.size(); ++i)
+    branches.push_back(tsrBranch(pb, sol.branches[i], i, a.result.window));
+  doc["branches"] = branches;
+  const std::string text = doc.dump(2) + "\n";
+  if (!a.out.empty()) {
+    replaceFile(a.out, text);
+    return kExitOk;
+  }
+  std::cout << text << std::flush;
+  if (!std::cout) throw WriteFailed("standard output: cannot write the result");
+  return kExitOk;
+}
+
+}  // namespace relpos::cli
