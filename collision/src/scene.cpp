@@ -157,10 +157,11 @@ bool surfacesMeet(const CollisionModel& m, const Isometry3d& X_WM, const Collisi
 
 }  // namespace
 
-bool Scene::collides(const Isometry3d& X_WM, double clearance,
+bool Scene::collides(const Isometry3d& X_WM, double call_clearance,
                      std::vector<Contact>* contacts) const {
   bool any = false;
   for (const auto& o : others_) {
+    const double clearance = o.clearance >= 0.0 ? o.clearance : call_clearance;
     const CollisionModel& m = *mobile_;
     const CollisionModel& b = *o.model;
     double depth = 0.0;
@@ -219,19 +220,24 @@ std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spe
   }
   ModelPtr mobile = load(problem.mobile.mesh, "mobile.mesh");
   std::vector<SceneObject> others;
-  if (!problem.fixed.mesh.empty()) {
+  auto allowed = [&](const std::string& name) {
+    return std::find(problem.allowed_contacts.begin(), problem.allowed_contacts.end(), name) !=
+           problem.allowed_contacts.end();
+  };
+  if (!problem.fixed.mesh.empty() && !allowed(problem.fixed.name)) {
     ModelPtr m = load(problem.fixed.mesh, "fixed.mesh");
-    if (m) others.push_back({problem.fixed.name, problem.fixed.pose, m});
+    if (m) others.push_back({problem.fixed.name, problem.fixed.pose, m, problem.fixed.clearance});
   }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
     const ObjectSpec& o = problem.obstacles[i];
+    if (allowed(o.name)) continue;
     if (o.mesh.empty()) {
       warnings->push_back(
           {"obstacles[" + std::to_string(i) + "]", "an obstacle without a mesh is not checked"});
       continue;
     }
     ModelPtr m = load(o.mesh, "obstacles[" + std::to_string(i) + "].mesh");
-    if (m) others.push_back({o.name, o.pose, m});
+    if (m) others.push_back({o.name, o.pose, m, o.clearance});
   }
   if (!errors->empty()) return nullptr;
   return std::make_unique<Scene>(std::move(mobile), std::move(others));

@@ -324,8 +324,8 @@ class Parser {
   void object(const Json& j, const Path& path, ObjectSpec* o, bool features_required,
               FeatureNames* names) {
     if (!j.is_object()) return error(path, "expected an object");
-    enum { kName, kPose, kFeatures, kMesh };
-    const auto f = fields<4>(j, path, {"name", "pose", "features", "mesh"});
+    enum { kName, kPose, kFeatures, kMesh, kClearance };
+    const auto f = fields<5>(j, path, {"name", "pose", "features", "mesh", "clearance"});
     o->name = path.str();
     const Json& name = f[kName];
     if (name.present()) {
@@ -341,6 +341,17 @@ class Parser {
         o->mesh = std::string(mesh.string());
       else
         error(Path(path, "mesh"), "expected a file name");
+    }
+    const Json& clearance = f[kClearance];
+    if (clearance.present()) {
+      const Path at(path, "clearance");
+      double c = 0.0;
+      if (path.str() == "mobile")
+        warn(at, "ignored: give the clearance on the objects the mobile object keeps away from");
+      else if (number(clearance, at, &c) && c < 0)
+        error(at, "must be >= 0");
+      else
+        o->clearance = c;
     }
     const Json& fs = f[kFeatures];
     if (!fs.present()) {
@@ -607,12 +618,48 @@ class Parser {
     return true;
   }
 
+  // "allowed_contacts": names of the fixed object or of obstacles (docs/spec.md §5.2).
+  void allowedContacts(const Json& j, Problem& pb) {
+    if (!j.is_array()) return error("allowed_contacts", "expected an array of object names");
+    std::vector<std::string_view> known{pb.fixed.name};
+    for (const ObjectSpec& o : pb.obstacles) known.push_back(o.name);
+    const Path list("allowed_contacts");
+    std::size_t i = 0;
+    for (dom::element e : j.array()) {
+      const Json name(e);
+      const Path at(list, i++);
+      if (!name.is_string()) {
+        error(at, "expected an object name (string)");
+        continue;
+      }
+      const std::string_view n = name.string();
+      if (std::find(known.begin(), known.end(), n) == known.end()) {
+        std::string names;
+        for (std::string_view k : known) names += (names.empty() ? "" : ", ") + std::string(k);
+        error(at, "no object '" + std::string(n) + "' (the fixed object and the obstacles: " +
+                      names + ")" + detail::didYouMean(n, known));
+        continue;
+      }
+      pb.allowed_contacts.emplace_back(n);
+    }
+  }
+
   void checks(const Json& j) {
     if (!j.is_object()) return error("", "the spec must be a JSON object");
-    enum { kRelpos, kName, kUnits, kFixed, kMobile, kObstacles, kConstraints, kPlugins };
-    const auto f = fields<8>(
-        j, "",
-        {"relpos", "name", "units", "fixed", "mobile", "obstacles", "constraints", "plugins"});
+    enum {
+      kRelpos,
+      kName,
+      kUnits,
+      kFixed,
+      kMobile,
+      kObstacles,
+      kConstraints,
+      kPlugins,
+      kAllowedContacts
+    };
+    const auto f = fields<9>(j, "",
+                             {"relpos", "name", "units", "fixed", "mobile", "obstacles",
+                              "constraints", "plugins", "allowed_contacts"});
     const Json& version = f[kRelpos];
     if (version.present() && !(version.is_number() && version.number() == 1))
       error("relpos", "unsupported format version (this relpos reads version 1)");
@@ -647,6 +694,7 @@ class Parser {
         }
       }
     }
+    if (f[kAllowedContacts].present()) allowedContacts(f[kAllowedContacts], pb);
     if (plugins.present()) {  // loaded by the caller before parsing (specPluginPaths)
       if (!plugins.is_array()) {
         error("plugins", "expected an array of plugin paths");

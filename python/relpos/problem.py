@@ -59,9 +59,12 @@ class Problem:
                          "mobile": {"name": "mobile", "features": {}}}
         self.constraints = []
         self.obstacles = []
+        self.allowed_contacts = []
 
-    def _object(self, which, name, pose, mesh):
+    def _object(self, which, name, pose, mesh, clearance=None):
         o = self._objects[which]
+        if clearance is not None:
+            o["clearance"] = float(clearance)
         if name is not None:
             o["name"] = name
         if pose is not None:
@@ -70,19 +73,28 @@ class Problem:
             o["mesh"] = str(mesh)
         return self
 
-    def set_fixed(self, name=None, *, pose=None, mesh=None):
-        """The fixed object's name, pose in the world and mesh (for collision filtering)."""
-        return self._object("fixed", name, pose, mesh)
+    def set_fixed(self, name=None, *, pose=None, mesh=None, clearance=None):
+        """The fixed object's name, pose in the world, mesh (for collision filtering) and own
+        clearance (in place of the solve's)."""
+        return self._object("fixed", name, pose, mesh, clearance)
 
     def set_mobile(self, name=None, *, pose=None, mesh=None):
         """The mobile object's name, initial pose (where it is now) and mesh."""
         return self._object("mobile", name, pose, mesh)
 
-    def add_obstacle(self, name, mesh, *, pose=None):
+    def add_obstacle(self, name, mesh, *, pose=None, clearance=None):
         o = {"name": name, "mesh": str(mesh)}
         if pose is not None:
             o["pose"] = _pose(pose)
+        if clearance is not None:
+            o["clearance"] = float(clearance)
         self.obstacles.append(o)
+        return self
+
+    def allow_contact(self, name):
+        """The mobile object may touch or pass into this object (the fixed one or an obstacle):
+        it is left out of collision filtering."""
+        self.allowed_contacts.append(name)
         return self
 
     def add_fixed_feature(self, name, feature):
@@ -122,6 +134,8 @@ class Problem:
                 "constraints": list(self.constraints)}
         if self.obstacles:
             spec["obstacles"] = list(self.obstacles)
+        if self.allowed_contacts:
+            spec["allowed_contacts"] = list(self.allowed_contacts)
         return spec
 
     def solve(self, samples=0, collision=False, **options):

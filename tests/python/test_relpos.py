@@ -85,6 +85,17 @@ class SolveTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             relpos.solve(path, angles="grad")
 
+    def test_a_dicts_meshes_are_found_from_base_dir_and_contacts_may_be_allowed(self):
+        folder = os.path.join(SOURCE, "data", "collision")
+        with open(os.path.join(folder, "part-on-table-beside-wall.json")) as f:
+            spec = json.load(f)
+        spec["allowed_contacts"] = ["table"]
+        got = relpos.solve(spec, collision=True, clearance=0.01, base_dir=folder)
+        self.assertEqual(got["branches"][0]["collision"]["checked_against"], ["wall"])
+        with self.assertRaises(relpos.SpecError) as e:  # no base_dir: the meshes are not found
+            relpos.solve(spec, collision=True)
+        self.assertEqual(e.exception.path, "mobile.mesh")
+
     def test_a_dict_is_solved_as_the_same_spec_in_a_file(self):
         for path in spec_files("scenarios"):
             with open(path) as f:

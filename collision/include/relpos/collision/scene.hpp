@@ -44,6 +44,7 @@ struct SceneObject {
   std::string name;
   Isometry3d X_WO;  // its pose in the world
   ModelPtr model;
+  double clearance = -1.0;  // ≥ 0: this object's own (ObjectSpec::clearance); else the call's
 };
 
 // Penetration up to this depth is touching, not colliding (docs/spec.md §5.2).
@@ -54,7 +55,8 @@ class Scene {
   Scene(ModelPtr mobile, std::vector<SceneObject> others)
       : mobile_(std::move(mobile)), others_(std::move(others)) {}
   // Whether the mobile object at X_WM collides with anything: interpenetrates by more than
-  // kTouchTolerance, lies inside a closed mesh (or contains one), or comes closer than clearance.
+  // kTouchTolerance, lies inside a closed mesh (or contains one), or comes closer than clearance
+  // (an object's own clearance in its place, when it has one).
   // Appends one contact per object it collides with. Thread-safe (const).
   bool collides(const Isometry3d& X_WM, double clearance,
                 std::vector<Contact>* contacts = nullptr) const;
@@ -66,7 +68,7 @@ class Scene {
 };
 
 // The scene of a problem: mesh paths relative to spec_dir. The mobile object needs a mesh; the
-// fixed object and the obstacles without one are left out. Errors and warnings carry the JSON
+// fixed object and the obstacles without one are left out, and so are the allowed contacts. Errors and warnings carry the JSON
 // path ("mobile.mesh", "obstacles[1].mesh").
 std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spec_dir,
                                   MeshCache& cache, std::vector<Diagnostic>* errors,

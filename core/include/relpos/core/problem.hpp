@@ -23,6 +23,9 @@ struct ObjectSpec {
   Isometry3d pose = Isometry3d::Identity();  // fixed: X_WF; mobile: initial X_WM
   std::vector<NamedFeature> features;
   std::string mesh;  // optional, relative to the spec file
+  // Collision filtering (docs/spec.md §5.2, since issue 17): the mobile object must keep this far
+  // from this object (≥ 0), instead of the command's --clearance; negative: the command's.
+  double clearance = -1.0;
   const Feature* find(const std::string& feature_name) const;
 };
 
@@ -82,6 +85,9 @@ struct Problem {
   ObjectSpec mobile;
   std::vector<ObjectSpec> obstacles;
   std::vector<InputConstraint> constraints;
+  // Objects (the fixed one or obstacles, by name) the mobile object may touch or pass into:
+  // left out of collision filtering, as MoveIt's allowed collision matrix leaves a pair out.
+  std::vector<std::string> allowed_contacts;
 
   // Convenience builders for the C++ API (no JSON).
   Problem& addFixedFeature(const std::string& name, const Feature& f);
