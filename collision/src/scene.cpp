@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "convex_pieces.hpp"
 #include "solid_inside.hpp"
@@ -98,17 +99,32 @@ ModelPtr buildModel(const Mesh& mesh) { return std::make_shared<const CollisionM
 
 ModelPtr MeshCache::get(const std::string& path, std::string* error,
                         std::vector<std::string>* warnings) {
+  return get(path, 1.0, error, warnings);
+}
+
+ModelPtr MeshCache::get(const std::string& path, double scale, std::string* error,
+                        std::vector<std::string>* warnings, double* size) {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto it = entries_.find(path);
+  // One entry per file and scale (written exactly, in hex-float).
+  char exact[40];
+  std::snprintf(exact, sizeof exact, "%a", scale);
+  const std::string key = path + '\0' + exact;
+  auto it = entries_.find(key);
   if (it == entries_.end()) {
     Entry e;
     Mesh mesh;
-    if (readMesh(path, &mesh, &e.error, &e.warnings)) e.model = buildModel(mesh);
-    it = entries_.emplace(path, std::move(e)).first;
+    if (readMesh(path, &mesh, &e.error, &e.warnings)) {
+      Eigen::AlignedBox3d box;
+      for (Vector3d& v : mesh.vertices) box.extend(v *= scale);
+      e.size = box.isEmpty() ? 0.0 : box.diagonal().norm();
+      e.model = buildModel(mesh);
+    }
+    it = entries_.emplace(key, std::move(e)).first;
   }
   if (!it->second.model) *error = it->second.error;
   if (warnings)
     warnings->insert(warnings->end(), it->second.warnings.begin(), it->second.warnings.end());
+  if (size) *size = it->second.size;
   return it->second.model;
 }
 
@@ -200,32 +216,62 @@ std::vector<std::string> Scene::checkedAgainst() const {
   return names;
 }
 
+namespace {
+
+// A mesh whose size is two orders of magnitude from its object's features' (how far they reach
+// from the object's origin; when they are all at it, the problem's size) was most likely written
+// in other units: what to say, or "".
+std::string meshSizeMismatch(const ObjectSpec& o, double mesh_size, double problem_size) {
+  double reach = 0.0;
+  for (const NamedFeature& f : o.features)
+    reach = std::max(reach, f.feature.point.norm() + f.feature.radius);
+  if (!(reach > 0.0)) reach = problem_size;
+  if (!(reach > 0.0) || !(mesh_size > 0.0)) return "";
+  const double ratio = mesh_size / reach;
+  if (ratio <= 100.0 && ratio >= 0.01) return "";
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "the mesh is %.3g across, its object's features reach %.3g (%.0fx %s): is it in "
+                "other units? (\"mesh_scale\": %g would make them agree)",
+                mesh_size, reach, ratio >= 1 ? ratio : 1 / ratio,
+                ratio >= 1 ? "larger" : "smaller",
+                std::pow(10.0, std::round(std::log10(reach / mesh_size) / 3) * 3));
+  return text;
+}
+
+}  // namespace
+
 std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spec_dir,
                                   MeshCache& cache, std::vector<Diagnostic>* errors,
                                   std::vector<Diagnostic>* warnings) {
   auto resolve = [&](const std::string& mesh) {
     return mesh.empty() || mesh[0] == '/' || spec_dir.empty() ? mesh : spec_dir + "/" + mesh;
   };
-  auto load = [&](const std::string& mesh, const std::string& json_path) -> ModelPtr {
+  auto load = [&](const ObjectSpec& o, const std::string& json_path) -> ModelPtr {
     std::string error;
     std::vector<std::string> notes;
-    ModelPtr m = cache.get(resolve(mesh), &error, &notes);
-    if (!m) errors->push_back({json_path, error + " ('" + mesh + "')"});
-    for (const auto& n : notes) warnings->push_back({json_path, n + " ('" + mesh + "')"});
+    double size = 0.0;
+    ModelPtr m = cache.get(resolve(o.mesh), o.mesh_scale, &error, &notes, &size);
+    if (!m) errors->push_back({json_path, error + " ('" + o.mesh + "')"});
+    for (const auto& n : notes) warnings->push_back({json_path, n + " ('" + o.mesh + "')"});
+    if (m) {
+      const std::string unlike = meshSizeMismatch(o, size, problem.lengthScale());
+      if (!unlike.empty()) warnings->push_back({json_path, unlike + " ('" + o.mesh + "')"});
+    }
     return m;
   };
   if (problem.mobile.mesh.empty()) {
     errors->push_back({"mobile.mesh", "collision filtering needs a mesh for the mobile object"});
     return nullptr;
   }
-  ModelPtr mobile = load(problem.mobile.mesh, "mobile.mesh");
+  ModelPtr mobile = load(problem.mobile, "mobile.mesh");
   std::vector<SceneObject> others;
   auto allowed = [&](const std::string& name) {
     return std::find(problem.allowed_contacts.begin(), problem.allowed_contacts.end(), name) !=
            problem.allowed_contacts.end();
   };
   if (!problem.fixed.mesh.empty() && !allowed(problem.fixed.name)) {
-    ModelPtr m = load(problem.fixed.mesh, "fixed.mesh");
+    ModelPtr m = load(problem.fixed, "fixed.mesh");
     if (m) others.push_back({problem.fixed.name, problem.fixed.pose, m, problem.fixed.clearance});
   }
   for (std::size_t i = 0; i < problem.obstacles.size(); ++i) {
@@ -236,7 +282,7 @@ std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spe
           {"obstacles[" + std::to_string(i) + "]", "an obstacle without a mesh is not checked"});
       continue;
     }
-    ModelPtr m = load(o.mesh, "obstacles[" + std::to_string(i) + "].mesh");
+    ModelPtr m = load(o, "obstacles[" + std::to_string(i) + "].mesh");
     if (m) others.push_back({o.name, o.pose, m, o.clearance});
   }
   if (!errors->empty()) return nullptr;

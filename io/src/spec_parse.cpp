@@ -324,8 +324,9 @@ class Parser {
   void object(const Json& j, const Path& path, ObjectSpec* o, bool features_required,
               FeatureNames* names) {
     if (!j.is_object()) return error(path, "expected an object");
-    enum { kName, kPose, kFeatures, kMesh, kClearance };
-    const auto f = fields<5>(j, path, {"name", "pose", "features", "mesh", "clearance"});
+    enum { kName, kPose, kFeatures, kMesh, kClearance, kMeshScale };
+    const auto f =
+        fields<6>(j, path, {"name", "pose", "features", "mesh", "clearance", "mesh_scale"});
     o->name = path.str();
     const Json& name = f[kName];
     if (name.present()) {
@@ -341,6 +342,15 @@ class Parser {
         o->mesh = std::string(mesh.string());
       else
         error(Path(path, "mesh"), "expected a file name");
+    }
+    const Json& scale = f[kMeshScale];
+    if (scale.present()) {
+      const Path at(path, "mesh_scale");
+      double k = 1.0;
+      if (number(scale, at, &k) && !(k > 0.0))
+        error(at, "must be > 0 (a mesh in millimetres in a spec in metres: 0.001)");
+      else
+        o->mesh_scale = k;
     }
     const Json& clearance = f[kClearance];
     if (clearance.present()) {

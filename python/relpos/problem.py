@@ -61,8 +61,10 @@ class Problem:
         self.obstacles = []
         self.allowed_contacts = []
 
-    def _object(self, which, name, pose, mesh, clearance=None):
+    def _object(self, which, name, pose, mesh, clearance=None, mesh_scale=None):
         o = self._objects[which]
+        if mesh_scale is not None:
+            o["mesh_scale"] = float(mesh_scale)
         if clearance is not None:
             o["clearance"] = float(clearance)
         if name is not None:
@@ -73,14 +75,14 @@ class Problem:
             o["mesh"] = str(mesh)
         return self
 
-    def set_fixed(self, name=None, *, pose=None, mesh=None, clearance=None):
-        """The fixed object's name, pose in the world, mesh (for collision filtering) and own
-        clearance (in place of the solve's)."""
-        return self._object("fixed", name, pose, mesh, clearance)
+    def set_fixed(self, name=None, *, pose=None, mesh=None, clearance=None, mesh_scale=None):
+        """The fixed object's name, pose in the world, mesh (for collision filtering; its
+        coordinates times mesh_scale) and own clearance (in place of the solve's)."""
+        return self._object("fixed", name, pose, mesh, clearance, mesh_scale)
 
-    def set_mobile(self, name=None, *, pose=None, mesh=None):
+    def set_mobile(self, name=None, *, pose=None, mesh=None, mesh_scale=None):
         """The mobile object's name, initial pose (where it is now) and mesh."""
-        return self._object("mobile", name, pose, mesh)
+        return self._object("mobile", name, pose, mesh, None, mesh_scale)
 
     def add_obstacle(self, name, mesh, *, pose=None, clearance=None):
         o = {"name": name, "mesh": str(mesh)}

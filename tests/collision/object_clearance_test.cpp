@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <unistd.h>
 #include <string>
 
 #include "relpos/collision/scene.hpp"
@@ -105,6 +106,82 @@ TEST(ObjectClearance, TheSpecSaysItAndRefusesWhatItCannotMean) {
   EXPECT_EQ(un.errors[0].path, "allowed_contacts[0]");
   EXPECT_NE(un.errors[0].message.find("did you mean 'table'?"), std::string::npos)
       << un.errors[0].message;
+}
+
+}  // namespace
+}  // namespace relpos::test
+
+namespace relpos::test {
+namespace {
+
+// The part's mesh written in millimetres beside a copy of the spec (meshes by absolute path).
+std::string millimetreSpec(const std::filesystem::path& dir, const std::string& extra_mobile) {
+  const std::filesystem::path meshes = std::filesystem::path(kSpec).parent_path() / "meshes";
+  std::ifstream in(meshes / "part.off");
+  std::ofstream out(dir / "part_mm.off");
+  std::string magic;
+  int nv = 0, nf = 0, ne = 0;
+  in >> magic >> nv >> nf >> ne;
+  out << magic << "\n" << nv << " " << nf << " " << ne << "\n";
+  for (int i = 0; i < 3 * nv; ++i) {
+    double x = 0;
+    in >> x;
+    out << x * 1000 << (i % 3 == 2 ? "\n" : " ");
+  }
+  out << in.rdbuf();
+  out.close();
+  std::string text = specText();
+  auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("\"meshes/table.off\"", "\"" + (meshes / "table.off").string() + "\"");
+  replace("\"meshes/wall.off\"", "\"" + (meshes / "wall.off").string() + "\"");
+  replace("\"meshes/part.off\"", "\"part_mm.off\"" + extra_mobile);
+  return text;
+}
+
+Report scaledReport(const std::string& text, const std::filesystem::path& dir,
+                    std::vector<Diagnostic>* warnings) {
+  ParseResult r = parseSpec(text, builtinRegistry());
+  EXPECT_TRUE(r.problem) << (r.errors.empty() ? "" : r.errors[0].message);
+  if (!r.problem) return Report();
+  collision::MeshCache cache;
+  std::vector<Diagnostic> errors;
+  const auto scene = collision::buildScene(*r.problem, dir.string(), cache, &errors, warnings);
+  EXPECT_TRUE(scene);
+  if (!scene) return Report();
+  return evaluate(*r.problem, solve(*r.problem, builtinRegistry()), ReportOptions(), scene.get());
+}
+
+TEST(MeshScale, AMeshInOtherUnitsIsToldAndScaled) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("relpos_mesh_scale_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::vector<Diagnostic> unscaled_warnings, scaled_warnings, plain_warnings;
+  const Report unscaled = scaledReport(millimetreSpec(dir, ""), dir, &unscaled_warnings);
+  ASSERT_EQ(unscaled_warnings.size(), 1u);
+  EXPECT_EQ(unscaled_warnings[0].path, "mobile.mesh");
+  EXPECT_NE(unscaled_warnings[0].message.find("\"mesh_scale\": 0.001 would make them agree"),
+            std::string::npos)
+      << unscaled_warnings[0].message;
+  // Scaled, it is the part of the original spec: the same verdicts, no warning.
+  const Report scaled =
+      scaledReport(millimetreSpec(dir, ", \"mesh_scale\": 0.001"), dir, &scaled_warnings);
+  EXPECT_TRUE(scaled_warnings.empty());
+  const Report plain = filtered(parsed(), 0.0);
+  ASSERT_EQ(scaled.collision.size(), plain.collision.size());
+  EXPECT_EQ(scaled.collision_free_branches, plain.collision_free_branches);
+  for (std::size_t b = 0; b < plain.collision.size(); ++b) {
+    EXPECT_EQ(scaled.collision[b].nearest_collides, plain.collision[b].nearest_collides);
+    EXPECT_EQ(scaled.collision[b].blocked_samples, plain.collision[b].blocked_samples);
+  }
+  std::filesystem::remove_all(dir);
+  // A scale that is no scale is refused.
+  std::string bad = specText();
+  bad.insert(bad.find("\"mesh\": \"meshes/part.off\""), R"("mesh_scale": 0, )");
+  ParseResult r = parseSpec(bad, builtinRegistry());
+  ASSERT_FALSE(r.problem);
+  EXPECT_EQ(r.errors[0].path, "mobile.mesh_scale");
 }
 
 }  // namespace

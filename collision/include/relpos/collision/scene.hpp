@@ -27,12 +27,17 @@ class MeshCache {
   // The model of the file at `path`, or nullptr with the reason in `error`; warnings (an open
   // mesh) are returned again on every use.
   ModelPtr get(const std::string& path, std::string* error, std::vector<std::string>* warnings);
+  // The same with its coordinates multiplied by `scale` (> 0: a mesh in millimetres in a spec in
+  // metres takes 0.001), and its size (the diagonal of its bounding box, scaled) in *size.
+  ModelPtr get(const std::string& path, double scale, std::string* error,
+               std::vector<std::string>* warnings, double* size = nullptr);
 
  private:
   struct Entry {
     ModelPtr model;
     std::string error;
     std::vector<std::string> warnings;
+    double size = 0.0;
   };
   std::mutex mutex_;
   std::map<std::string, Entry> entries_;

@@ -23,6 +23,7 @@ struct ObjectSpec {
   Isometry3d pose = Isometry3d::Identity();  // fixed: X_WF; mobile: initial X_WM
   std::vector<NamedFeature> features;
   std::string mesh;  // optional, relative to the spec file
+  double mesh_scale = 1.0;  // the mesh's coordinates times this (> 0): its units into the spec's
   // Collision filtering (docs/spec.md §5.2, since issue 17): the mobile object must keep this far
   // from this object (≥ 0), instead of the command's --clearance; negative: the command's.
   double clearance = -1.0;
