@@ -28,5 +28,9 @@ const Command* findCommand(const std::string& name);
 void printUsage(std::ostream& out);
 // One command's help: its synopsis, what it does, each option.
 void printHelp(std::ostream& out, const Command& command);
+// The same tables as a man page (roff, section 1: `relpos help --man`) and as a bash completion
+// script (`relpos help --bash-completion`); the build writes both and installs them.
+void printManPage(std::ostream& out, const std::string& version);
+void printBashCompletion(std::ostream& out);
 
 }  // namespace relpos::cli

@@ -34,6 +34,14 @@ int run(int argc, char** argv) {
       printUsage(std::cout);
       return kExitOk;
     }
+    if (argc == 3 && std::strcmp(argv[2], "--man") == 0) {
+      printManPage(std::cout, RELPOS_VERSION);
+      return kExitOk;
+    }
+    if (argc == 3 && std::strcmp(argv[2], "--bash-completion") == 0) {
+      printBashCompletion(std::cout);
+      return kExitOk;
+    }
     const Command* about = argc == 3 ? findCommand(argv[2]) : nullptr;
     if (!about) throw UsageError("help: expected one command, e.g. 'relpos help solve'");
     printHelp(std::cout, *about);

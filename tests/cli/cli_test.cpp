@@ -131,6 +131,40 @@ TEST(Cli, ExportWritesTsrChains) {
   EXPECT_NE(bad.err.find("--format: expected tsr, got 'urdf'"), std::string::npos) << bad.err;
 }
 
+// Issue 17: the man page and the bash completion come from the help's own tables.
+TEST(Cli, ManPageAndBashCompletionFollowTheHelp) {
+  CmdResult man = run("help --man");
+  ASSERT_EQ(man.code, 0) << man.err;
+  EXPECT_EQ(man.out.rfind(".TH RELPOS 1 ", 0), 0u) << man.out.substr(0, 80);
+  for (const char* command : {"solve", "batch", "table", "rules", "export"}) {
+    EXPECT_NE(man.out.find(std::string(".SS ") + command + "\n"), std::string::npos) << command;
+    // every option of the command's help is in the page, its hyphens as roff's minus signs
+    CmdResult help = run(std::string("help ") + command);
+    std::istringstream lines(help.out);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("  --", 0) != 0) continue;
+      std::string flag = line.substr(2, line.find(' ', 2) - 2), escaped;
+      for (char c : flag) escaped += c == '-' ? std::string("\\-") : std::string(1, c);
+      EXPECT_NE(man.out.find(".B " + escaped), std::string::npos) << command << " " << flag;
+    }
+  }
+  CmdResult script = run("help --bash-completion");
+  ASSERT_EQ(script.code, 0) << script.err;
+  fs::path d = scratchDir();
+  std::ofstream(d / "relpos.bash") << script.out;
+  // What bash offers: commands after "relpos so", solve's options after "--an", the units after
+  // "--angles".
+  const std::string complete =
+      "bash -c 'source " + (d / "relpos.bash").string() +
+      "; COMP_WORDS=(relpos so); COMP_CWORD=1; _relpos; echo \"${COMPREPLY[*]}\";"
+      " COMP_WORDS=(relpos solve x.json --an); COMP_CWORD=3; _relpos; echo \"${COMPREPLY[*]}\";"
+      " COMP_WORDS=(relpos solve x.json --angles \"\"); COMP_CWORD=4; _relpos;"
+      " echo \"${COMPREPLY[*]}\"'";
+  CmdResult offered = runShell(complete);
+  ASSERT_EQ(offered.code, 0) << offered.err;
+  EXPECT_EQ(offered.out, "solve\n--angles\ndeg rad\n");
+}
+
 TEST(Cli, SameSeedSameSamples) {
   CmdResult a = run("solve " + kExample + " --samples 4 --seed 9");
   CmdResult b = run("solve " + kExample + " --samples 4 --seed 9");
