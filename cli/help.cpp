@@ -83,10 +83,12 @@ const Command kCommands[] = {
      cmdBatch,
      true},
     {"export",
-     "export SPEC.json --format tsr [--window W] [-o OUT.json]",
+     "export SPEC.json --format tsr|moveit [--window W] [-o OUT.json]",
      "Writes each branch of a spec's answer as a planner takes it: a Task Space Region chain "
-     "(T0_w, Tw_e, Bw per link, as personalrobotics/tsr), or null with the reason.",
-     {{"--format tsr", "the planner's form: tsr (Task Space Region chains)"},
+     "(T0_w, Tw_e, Bw per link, as personalrobotics/tsr), or null with the reason; or MoveIt "
+     "goal constraints (moveit_msgs/Constraints as JSON), exact or conservative.",
+     {{"--format tsr|moveit",
+       "tsr: Task Space Region chains; moveit: moveit_msgs/Constraints (JSON, which is YAML)"},
       {"--window W", "unbounded lengths are bounded to +-W about the nearest pose's (default 1)"},
       {"-o OUT.json", "write to OUT.json (replaced whole, only once it is complete)"}},
      cmdExport,
@@ -241,7 +243,7 @@ void printBashCompletion(std::ostream& out) {
   out << "--help\" -- \"$cur\"))\n    return\n  fi\n"
       << "  case \"$prev\" in\n"
       << "    --angles) COMPREPLY=($(compgen -W \"deg rad\" -- \"$cur\")); return ;;\n"
-      << "    --format) COMPREPLY=($(compgen -W \"tsr\" -- \"$cur\")); return ;;\n"
+      << "    --format) COMPREPLY=($(compgen -W \"tsr moveit\" -- \"$cur\")); return ;;\n"
       << "    --plugin) COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n"
       << "    -o) COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n"
       << "  esac\n"

@@ -1,4 +1,5 @@
-// relpos export (docs/spec.md §3.11): a spec's branches in a planner's terms — TSR chains.
+// relpos export (docs/spec.md §3.11): a spec's branches in a planner's terms — TSR chains or
+// MoveIt goal constraints.
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -6,6 +7,7 @@
 #include "cli.hpp"
 #include "output_file.hpp"
 #include "relpos/core/solver.hpp"
+#include "relpos/report/moveit.hpp"
 #include "relpos/report/tsr.hpp"
 
 namespace relpos::cli {
@@ -50,13 +52,64 @@ nlohmann::json tsrBranch(const relpos::Problem& pb, const relpos::Branch& b, std
   return j;
 }
 
+nlohmann::json vec(const relpos::Vector3d& v) { return {{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; }
+
+nlohmann::json quat(const Eigen::Quaterniond& q) {
+  return {{"x", q.x()}, {"y", q.y()}, {"z", q.z()}, {"w", q.w()}};
+}
+
+// moveit_msgs/Constraints for one branch, frames named as relpos's: "world" and the mobile
+// object's name as the link.
+nlohmann::json moveitBranch(const relpos::Problem& pb, const relpos::Branch& b, std::size_t index,
+                            double window) {
+  nlohmann::json j;
+  j["index"] = index;
+  j["manifold"] = b.manifold->describe();
+  j["dof"] = b.manifold->dof();
+  const relpos::NearestPose near = relpos::nearestOnBranch(b, pb.mobile.pose);
+  const relpos::MoveItGoal g = relpos::moveitGoalOf(pb, b, near.parameters, window);
+  j["exact"] = g.exact;
+  if (!g.exact) j["why"] = g.why;
+  if (g.windowed) j["window"] = window;
+  const nlohmann::json header = {{"frame_id", "world"}};
+  nlohmann::json position = {
+      {"header", header},
+      {"link_name", pb.mobile.name},
+      {"target_point_offset", vec(g.target_point_offset)},
+      {"constraint_region",
+       {{"primitives",
+         {{{"type", 1},  // shape_msgs/SolidPrimitive BOX
+           {"dimensions",
+            {g.box_dimensions.x(), g.box_dimensions.y(), g.box_dimensions.z()}}}}},
+        {"primitive_poses",
+         {{{"position", vec(g.box_pose.translation())},
+           {"orientation", quat(Eigen::Quaterniond(g.box_pose.linear()))}}}},
+        {"meshes", nlohmann::json::array()},
+        {"mesh_poses", nlohmann::json::array()}}},
+      {"weight", 1.0}};
+  nlohmann::json orientation = {{"header", header},
+                                {"orientation", quat(g.orientation)},
+                                {"link_name", pb.mobile.name},
+                                {"absolute_x_axis_tolerance", g.axis_tolerances.x()},
+                                {"absolute_y_axis_tolerance", g.axis_tolerances.y()},
+                                {"absolute_z_axis_tolerance", g.axis_tolerances.z()},
+                                {"parameterization", 0},  // XYZ_EULER_ANGLES
+                                {"weight", 1.0}};
+  j["constraints"] = {{"name", pb.name + " branch " + std::to_string(index)},
+                      {"joint_constraints", nlohmann::json::array()},
+                      {"position_constraints", {position}},
+                      {"orientation_constraints", {orientation}},
+                      {"visibility_constraints", nlohmann::json::array()}};
+  return j;
+}
+
 }  // namespace
 
 int cmdExport(const Args& a, const Registry& reg) {
   if (a.positional.size() != 1) throw UsageError("export takes exactly one spec file");
-  if (a.format != "tsr")
-    throw UsageError(a.format.empty() ? "export needs --format tsr"
-                                      : "--format: expected tsr, got '" + a.format + "'");
+  if (a.format != "tsr" && a.format != "moveit")
+    throw UsageError(a.format.empty() ? "export needs --format tsr or --format moveit"
+                                      : "--format: expected tsr or moveit, got '" + a.format + "'");
   if (!a.out.empty()) checkOutput(a.out, a.positional, OutputMode::kReplace);
   relpos::Problem pb;
   if (!loadProblem(a.positional[0], reg, &pb)) return kExitInvalid;
@@ -69,7 +122,8 @@ int cmdExport(const Args& a, const Registry& reg) {
   doc["message"] = sol.message;
   nlohmann::json branches = nlohmann::json::array();
   for (std::size_t i = 0; i < sol.branches.size(); ++i)
-    branches.push_back(tsrBranch(pb, sol.branches[i], i, a.result.window));
+    branches.push_back(a.format == "tsr" ? tsrBranch(pb, sol.branches[i], i, a.result.window)
+                                         : moveitBranch(pb, sol.branches[i], i, a.result.window));
   doc["branches"] = branches;
   const std::string text = doc.dump(2) + "\n";
   if (!a.out.empty()) {

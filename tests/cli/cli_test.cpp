@@ -128,7 +128,23 @@ TEST(Cli, ExportWritesTsrChains) {
   EXPECT_FALSE(cdoc["branches"][0]["why"].get<std::string>().empty());
   CmdResult bad = run("export " RELPOS_DATA_DIR "/scenarios/scenario-c-cylinder-grasp.json --format urdf");
   EXPECT_EQ(bad.code, 2);
-  EXPECT_NE(bad.err.find("--format: expected tsr, got 'urdf'"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("--format: expected tsr or moveit, got 'urdf'"), std::string::npos)
+      << bad.err;
+  // MoveIt goal constraints (checked pose by pose in tests/report/moveit_test.cpp): a part at a
+  // distance from a plane turns freely about the plane's normal.
+  CmdResult m = run("export " RELPOS_DATA_DIR "/scenarios/scenario-a-plane-distance.json "
+                    "--format moveit");
+  ASSERT_EQ(m.code, 0) << m.err;
+  const nlohmann::json goal = nlohmann::json::parse(m.out)["branches"][0];
+  EXPECT_TRUE(goal["exact"].get<bool>());
+  const nlohmann::json& pc = goal["constraints"]["position_constraints"][0];
+  EXPECT_EQ(pc["constraint_region"]["primitives"][0]["type"], 1);
+  EXPECT_EQ(pc["header"]["frame_id"], "world");
+  const nlohmann::json& oc = goal["constraints"]["orientation_constraints"][0];
+  double widest = 0;
+  for (const char* axis : {"x", "y", "z"})
+    widest = std::max(widest, oc[std::string("absolute_") + axis + "_axis_tolerance"].get<double>());
+  EXPECT_NEAR(widest, M_PI, 1e-9);
 }
 
 // Issue 17: the man page and the bash completion come from the help's own tables.
