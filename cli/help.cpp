@@ -201,7 +201,8 @@ std::string flagWord(const Option& o) {
 }  // namespace
 
 void printManPage(std::ostream& out, const std::string& version) {
-  out << ".TH RELPOS 1 \"\" \"relpos " << version << "\" \"User Commands\"\n"
+  out << ".\\\" -*- coding: utf-8 -*-\n"
+      << ".TH RELPOS 1 \"\" \"relpos " << version << "\" \"User Commands\"\n"
       << ".SH NAME\nrelpos \\- every pose of an object that satisfies geometric relations\n"
       << ".SH SYNOPSIS\n";
   for (const Command& c : kCommands) {
@@ -244,9 +245,13 @@ void printBashCompletion(std::ostream& out) {
       << "  case \"$prev\" in\n"
       << "    --angles) COMPREPLY=($(compgen -W \"deg rad\" -- \"$cur\")); return ;;\n"
       << "    --format) COMPREPLY=($(compgen -W \"tsr moveit\" -- \"$cur\")); return ;;\n"
-      << "    --plugin) COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n"
-      << "    -o) COMPREPLY=($(compgen -f -- \"$cur\")); return ;;\n"
+      << "    --plugin|-o) mapfile -t COMPREPLY < <(compgen -f -- \"$cur\"); return ;;\n"
       << "  esac\n"
+      << "  if [ \"$cmd\" = help ] && [ \"$COMP_CWORD\" -eq 2 ]; then\n"
+      << "    COMPREPLY=($(compgen -W \"";
+  for (const Command& c : kCommands)
+    if (c.name[0] != 'v' && std::strcmp(c.name, "help") != 0) out << c.name << " ";
+  out << "\" -- \"$cur\"))\n    return\n  fi\n"
       << "  local opts\n  case \"$cmd\" in\n";
   for (const Command& c : kCommands) {
     out << "    " << c.name << ") opts=\"";
@@ -259,7 +264,7 @@ void printBashCompletion(std::ostream& out) {
       << "  if [[ \"$cur\" == -* ]]; then\n"
       << "    COMPREPLY=($(compgen -W \"$opts\" -- \"$cur\"))\n"
       << "  else\n"
-      << "    COMPREPLY=($(compgen -f -- \"$cur\"))\n"
+      << "    mapfile -t COMPREPLY < <(compgen -f -- \"$cur\")  # names with spaces whole\n"
       << "  fi\n"
       << "}\n"
       << "complete -o filenames -F _relpos relpos\n";

@@ -34,12 +34,21 @@ std::string notFoundByName(const std::string& path, const std::vector<std::strin
 bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
   struct Item {
     std::string path, where;  // where: what named it, for the message
+    // a plugin named without a folder (a spec's entry joined to the spec's folder): found by
+    // name beside relpos when no such file is there (a path that names no file is not)
+    std::string name;
+  };
+  auto specItem = [](const std::string& path, const std::string& dir, std::string where) {
+    return Item{path, std::move(where), relpos::plugins::bareEntry(path, dir)};
+  };
+  auto bare = [](const std::string& p) {
+    return p.find('/') == std::string::npos ? p : std::string();
   };
   std::vector<Item> items;
   if (const char* env = std::getenv("RELPOS_PLUGIN_PATH"))
     for (const auto& p : relpos::plugins::expandPluginPath(env))
-      items.push_back({p, "RELPOS_PLUGIN_PATH: "});
-  for (const auto& p : a.plugins) items.push_back({p, ""});
+      items.push_back({p, "RELPOS_PLUGIN_PATH: ", bare(p)});
+  for (const auto& p : a.plugins) items.push_back({p, "", bare(p)});
   std::vector<std::string> specs;
   if ((cmd == "solve" || cmd == "export") && a.positional.size() == 1) specs = a.positional;
   const bool batch = cmd == "batch" && a.positional.size() == 1;
@@ -60,16 +69,18 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
       const std::size_t end = std::min(all.find('\n', at), all.size());
       const auto paths = relpos::specPluginPathsInText(all.substr(at, end - at), dir);
       for (std::size_t i = 0; i < paths.size(); ++i)  // "FILE:LINE: plugins[i]: ", one line
-        items.push_back(
-            {paths[i], relpos::formatDiagnostic(a.positional[0] + ":" + std::to_string(n + 1),
-                                                {"plugins[" + std::to_string(i) + "]", ""})});
+        items.push_back(specItem(
+            paths[i], dir,
+            relpos::formatDiagnostic(a.positional[0] + ":" + std::to_string(n + 1),
+                                     {"plugins[" + std::to_string(i) + "]", ""})));
       at = end + 1;
     }
   }
   for (const auto& spec : specs) {
     const auto paths = relpos::specPluginPaths(spec);
     for (std::size_t i = 0; i < paths.size(); ++i)
-      items.push_back({paths[i], spec + ": plugins[" + std::to_string(i) + "]: "});
+      items.push_back(specItem(paths[i], fs::path(spec).parent_path().string(),
+                               spec + ": plugins[" + std::to_string(i) + "]: "));
   }
   relpos::plugins::LoadOptions options;
   options.allow_override = a.allow_override;
@@ -78,9 +89,12 @@ bool loadPlugins(const std::string& cmd, const Args& a, Registry& reg) {
       relpos::plugins::pluginFoldersFor(relpos::plugins::executableDir());
   for (const auto& item : items) {
     std::string error;
-    const std::string path = relpos::plugins::findPlugin(item.path, folders);
+    const bool missing = !fs::exists(item.path);
+    const std::string path = missing && !item.name.empty()
+                                 ? relpos::plugins::findPlugin(item.name, folders)
+                                 : item.path;
     if (!relpos::plugins::loadPlugin(path, reg, &error, options)) {
-      if (path == item.path && !fs::exists(path)) error += notFoundByName(path, folders);
+      if (missing && !item.name.empty()) error += notFoundByName(item.name, folders);
       std::cerr << "relpos: " << oneLine(item.where + error) << "\n";
       return false;
     }

@@ -1,5 +1,6 @@
 // relpos export (docs/spec.md §3.11): a spec's branches in a planner's terms — TSR chains or
 // MoveIt goal constraints.
+#include <exception>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -121,9 +122,17 @@ int cmdExport(const Args& a, const Registry& reg) {
   doc["status"] = relpos::toString(sol.status);
   doc["message"] = sol.message;
   nlohmann::json branches = nlohmann::json::array();
-  for (std::size_t i = 0; i < sol.branches.size(); ++i)
-    branches.push_back(a.format == "tsr" ? tsrBranch(pb, sol.branches[i], i, a.result.window)
-                                         : moveitBranch(pb, sol.branches[i], i, a.result.window));
+  for (std::size_t i = 0; i < sol.branches.size(); ++i) {
+    try {
+      branches.push_back(a.format == "tsr" ? tsrBranch(pb, sol.branches[i], i, a.result.window)
+                                           : moveitBranch(pb, sol.branches[i], i, a.result.window));
+    } catch (const std::exception& e) {  // a plugin's manifold that throws: this branch only
+      branches.push_back({{"index", i},
+                          {"exact", false},
+                          {a.format == "tsr" ? "tsr_chain" : "constraints", nullptr},
+                          {"why", std::string("the branch's code threw: ") + e.what()}});
+    }
+  }
   doc["branches"] = branches;
   const std::string text = doc.dump(2) + "\n";
   if (!a.out.empty()) {

@@ -219,16 +219,19 @@ std::vector<std::string> Scene::checkedAgainst() const {
 namespace {
 
 // A mesh whose size is two orders of magnitude from its object's features' (how far they reach
-// from the object's origin; when they are all at it, the problem's size) was most likely written
-// in other units: what to say, or "".
+// from the object's origin) was most likely written in other units: what to say, or "". When
+// every feature is at the origin, the problem's size (`problem_size`; 0 for an obstacle, which
+// has no features and may be any size) stands in, at 300 times: a 1 cm part in a 1.5 m cell is
+// not a units slip, a part in millimetres in metres (about 1000 times) is.
 std::string meshSizeMismatch(const ObjectSpec& o, double mesh_size, double problem_size) {
   double reach = 0.0;
   for (const NamedFeature& f : o.features)
     reach = std::max(reach, f.feature.point.norm() + f.feature.radius);
-  if (!(reach > 0.0)) reach = problem_size;
+  double limit = 100.0;
+  if (!(reach > 0.0)) reach = problem_size, limit = 300.0;
   if (!(reach > 0.0) || !(mesh_size > 0.0)) return "";
   const double ratio = mesh_size / reach;
-  if (ratio <= 100.0 && ratio >= 0.01) return "";
+  if (ratio <= limit && ratio >= 1.0 / limit) return "";
   char text[256];
   std::snprintf(text, sizeof text,
                 "the mesh is %.3g across, its object's features reach %.3g (%.0fx %s): is it in "
@@ -247,7 +250,8 @@ std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spe
   auto resolve = [&](const std::string& mesh) {
     return mesh.empty() || mesh[0] == '/' || spec_dir.empty() ? mesh : spec_dir + "/" + mesh;
   };
-  auto load = [&](const ObjectSpec& o, const std::string& json_path) -> ModelPtr {
+  auto load = [&](const ObjectSpec& o, const std::string& json_path,
+                  bool an_obstacle = false) -> ModelPtr {
     std::string error;
     std::vector<std::string> notes;
     double size = 0.0;
@@ -255,7 +259,8 @@ std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spe
     if (!m) errors->push_back({json_path, error + " ('" + o.mesh + "')"});
     for (const auto& n : notes) warnings->push_back({json_path, n + " ('" + o.mesh + "')"});
     if (m) {
-      const std::string unlike = meshSizeMismatch(o, size, problem.lengthScale());
+      const std::string unlike =
+          meshSizeMismatch(o, size, an_obstacle ? 0.0 : problem.lengthScale());
       if (!unlike.empty()) warnings->push_back({json_path, unlike + " ('" + o.mesh + "')"});
     }
     return m;
@@ -282,7 +287,7 @@ std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spe
           {"obstacles[" + std::to_string(i) + "]", "an obstacle without a mesh is not checked"});
       continue;
     }
-    ModelPtr m = load(o, "obstacles[" + std::to_string(i) + "].mesh");
+    ModelPtr m = load(o, "obstacles[" + std::to_string(i) + "].mesh", true);
     if (m) others.push_back({o.name, o.pose, m, o.clearance});
   }
   if (!errors->empty()) return nullptr;

@@ -72,11 +72,15 @@ ConstraintSpec& ConstraintSpec::range(double min, double max) {
   max_ = max;
   return *this;
 }
-ConstraintSpec& ConstraintSpec::atLeast(double min) {
-  return range(min, std::numeric_limits<double>::infinity());
+ConstraintSpec& ConstraintSpec::atLeast(double min) {  // the other bound as it was: both chain
+  has_range_ = true;
+  min_ = min;
+  return *this;
 }
 ConstraintSpec& ConstraintSpec::atMost(double max) {
-  return range(-std::numeric_limits<double>::infinity(), max);
+  has_range_ = true;
+  max_ = max;
+  return *this;
 }
 ConstraintSpec& ConstraintSpec::orientation(Orientation o) {
   orientation_ = o;

@@ -38,8 +38,9 @@ std::string executableDir() {
 
 std::string findPlugin(const std::string& path, const std::vector<std::string>& folders) {
   std::error_code ec;
-  if (fs::exists(path, ec)) return path;
-  const std::string name = fs::path(path).filename().string();
+  // A path with a folder in it names that file only: a stale path must not load another build.
+  if (fs::exists(path, ec) || path.find('/') != std::string::npos) return path;
+  const std::string& name = path;
   if (name.empty()) return path;
   for (const std::string& dir : folders)
     for (const std::string& file : {name, name + ".so", "relpos-" + name + ".so"}) {
@@ -47,6 +48,13 @@ std::string findPlugin(const std::string& path, const std::vector<std::string>& 
       if (fs::is_regular_file(candidate, ec)) return candidate.string();
     }
   return path;
+}
+
+std::string bareEntry(const std::string& joined, const std::string& dir) {
+  const std::string prefix = dir.empty() || dir.back() == '/' ? dir : dir + "/";
+  if (joined.compare(0, prefix.size(), prefix) != 0) return "";
+  const std::string entry = joined.substr(prefix.size());
+  return entry.find('/') == std::string::npos ? entry : std::string();
 }
 
 }  // namespace relpos::plugins

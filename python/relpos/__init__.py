@@ -67,8 +67,11 @@ def _solve(spec, samples, window, seed, collision, clearance, collision_samples,
     if isinstance(spec, Problem):
         spec = spec.to_dict()
     if isinstance(spec, dict):
-        text = json.dumps(spec, default=_json_default)
         file = "<dict>"
+        try:
+            text = json.dumps(spec, default=_json_default, allow_nan=False)
+        except ValueError:  # NaN or an infinity: JSON has no such number
+            raise SpecError(file, [("", "a number is NaN or infinite (JSON has no such number)")])
         solved, errors, found = _relpos.solve_text(text, os.fspath(base_dir or "."), options)
     elif isinstance(spec, (str, os.PathLike)):
         file = os.fspath(spec)
@@ -158,7 +161,8 @@ class Branch:
 
 class Solution:
     """A solved spec: the result document's fields, and ``branches`` as Branch objects whose
-    poses can be asked for. Same arguments as ``solve``."""
+    poses can be asked for. The arguments are ``solve``'s but ``angles``: a Branch works in
+    radians, and so does its ``result``."""
 
     def __init__(self, spec, samples=0, collision=False, *, window=1.0, seed=0, clearance=0.0,
                  collision_samples=64, base_dir=None):

@@ -84,8 +84,10 @@ class Problem:
         """The mobile object's name, initial pose (where it is now) and mesh."""
         return self._object("mobile", name, pose, mesh, None, mesh_scale)
 
-    def add_obstacle(self, name, mesh, *, pose=None, clearance=None):
+    def add_obstacle(self, name, mesh, *, pose=None, clearance=None, mesh_scale=None):
         o = {"name": name, "mesh": str(mesh)}
+        if mesh_scale is not None:
+            o["mesh_scale"] = float(mesh_scale)
         if pose is not None:
             o["pose"] = _pose(pose)
         if clearance is not None:

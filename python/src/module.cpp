@@ -175,21 +175,26 @@ py::tuple solveParsed(relpos::ParseResult r, const std::string& spec_dir,
   return py::make_tuple(s, py::list(), warnings);
 }
 
-void loadSpecPlugins(const std::vector<std::string>& paths) {
-  for (const std::string& p : paths) plugins().load(p);
+// A spec's entries, joined to `dir`: a bare name that names no file there is looked for by name
+// beside the package.
+void loadSpecPlugins(const std::vector<std::string>& paths, const std::string& dir) {
+  for (const std::string& p : paths) {
+    const std::string bare = relpos::plugins::bareEntry(p, dir);
+    plugins().load(!bare.empty() && !std::filesystem::exists(p) ? bare : p);
+  }
 }
 
 py::tuple solveFile(const std::string& file, const SolveOptions& o) {
   if (!std::filesystem::is_regular_file(file))
     throw py::value_error(file + ": no such file (a spec is a path to a .json file or a dict)");
-  loadSpecPlugins(relpos::specPluginPaths(file));
-  auto reg = plugins().registry();
   const std::string dir = std::filesystem::path(file).parent_path().string();
+  loadSpecPlugins(relpos::specPluginPaths(file), dir);
+  auto reg = plugins().registry();
   return solveParsed(relpos::parseSpecFile(file, *reg), dir, reg, o);
 }
 
 py::tuple solveText(const std::string& text, const std::string& base_dir, const SolveOptions& o) {
-  loadSpecPlugins(relpos::specPluginPathsInText(text, base_dir));
+  loadSpecPlugins(relpos::specPluginPathsInText(text, base_dir), base_dir);
   auto reg = plugins().registry();
   return solveParsed(relpos::parseSpec(text, *reg), base_dir, reg, o);
 }

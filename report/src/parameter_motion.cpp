@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <limits>
 
 namespace relpos {
 
@@ -23,10 +24,12 @@ ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double 
   const double phi = turn.angle();
   if (!std::isfinite(phi) || !t.allFinite() || !(span > 0.0)) return mo;
   // Below these a motion is rounding: 1e-9 rad, or 1e-9 of the problem's size, per unit of the
-  // parameter.
-  if (phi < 1e-9 * span) {
+  // parameter, and never below the poses' own rounding (64 ulps of their angles and coordinates).
+  constexpr double kUlps = 64 * std::numeric_limits<double>::epsilon();
+  const double length_noise = kUlps * (scale + Xa.translation().norm() + Xb.translation().norm());
+  if (phi < std::max(1e-9 * span, kUlps)) {
     const double v = t.norm() / span;
-    if (!(v >= 1e-9 * scale)) return mo;
+    if (!(v >= 1e-9 * scale) || !(t.norm() > length_noise)) return mo;
     mo.type = ParameterMotion::Type::kTranslation;
     mo.axis = t.normalized();
     mo.rate = v;
@@ -42,7 +45,7 @@ ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double 
   const Vector3d q = 0.5 * (perp + a.cross(perp) / std::tan(0.5 * phi));
   mo.point = q + (origin - q).dot(a) * a;  // the axis point nearest the origin
   mo.pitch = d / phi;
-  if (std::abs(d) < 1e-9 * scale * span) {
+  if (std::abs(d) < std::max(1e-9 * scale * span, length_noise)) {
     mo.type = ParameterMotion::Type::kRotation;
     mo.pitch = 0.0;
   } else {
@@ -54,7 +57,9 @@ ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double 
 ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step,
                             double scale) {
   const Parameter p = m.parameter(i);
-  const double h = step * (1.0 + std::abs(at[i]));
+  double h = step * (1.0 + std::abs(at[i]));
+  // Within a narrow range (a 1° angle range, a 10 mm one in metres): a quarter of it.
+  if (!p.periodic && std::isfinite(p.max - p.min)) h = std::min(h, 0.25 * (p.max - p.min));
   Params a = at, b = at;
   a[i] = at[i] - h;
   b[i] = at[i] + h;
@@ -107,7 +112,7 @@ void parameterMotions(const Problem& problem, const Branch& branch, const Params
     // A plugin's pose function that throws beside the nearest pose leaves the motion unknown;
     // the stage that needs those poses (samples, the collision filter) reports it.
     try {
-      found = motionAlong(m, at, i, 1e-6, scale);
+      found = motionAlong(m, at, i, 1e-4, scale);
     } catch (const std::exception&) {
       found.type = ParameterMotion::Type::kUnknown;
     }

@@ -22,9 +22,10 @@ void parameterMotions(const Problem& problem, const Branch& branch, const Params
 ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double span,
                              const Vector3d& origin, double scale);
 
-// The motion of parameter i of m about `at`, between the poses `step` (relative) to either side
-// within its bounds: what the report writes (step 1e-6), and exactly the parameter's screw
-// whatever the step when the parameter turns about a fixed line or slides along a fixed direction.
+// The motion of parameter i of m about `at`, between the poses `step` (relative; at most a quarter
+// of a bounded range) to either side within its bounds: what the report writes (step 1e-4: the
+// instantaneous motion to about 1e-8), and exactly the parameter's screw whatever the step when
+// the parameter turns about a fixed line or slides along a fixed direction.
 ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale);
 
 }  // namespace relpos::detail

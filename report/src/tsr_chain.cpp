@@ -101,14 +101,17 @@ Isometry3d frameAlong(const Vector3d& z, const Vector3d& origin) {
   return F;
 }
 
-// One link per factor: T0_w·Xform(b)·Tw_e = F·(slide z or turn yaw)·F⁻¹, the last one carrying
-// X(θ*).
+// One link per factor, each a slide on its frame's z or a turn as its yaw: F_k·Xform(b_k)·F_k⁻¹.
+// Written as personalrobotics/tsr and or_ompl compose a chain — only the first link's T0_w is
+// used, each later link starting at the pose so far — so each frame is folded into the link
+// before: T0_w = F_0 on the first link and the identity on the others, Tw_e = F_k⁻¹·F_{k+1}, and
+// F_n⁻¹·X(θ*) on the last.
 std::vector<TsrLink> linkPerFactor(const std::vector<Factor>& order, const Isometry3d& X_at) {
   std::vector<TsrLink> chain;
+  std::vector<Isometry3d> frames;
   for (const Factor& f : order) {
+    frames.push_back(frameAlong(f.axis, f.turn ? f.point : Vector3d::Zero()));
     TsrLink link;
-    link.T0_w = frameAlong(f.axis, f.turn ? f.point : Vector3d::Zero());
-    link.Tw_e = link.T0_w.inverse();
     link.Bw[f.turn ? 5 : 2] = {f.lo, f.hi};
     chain.push_back(link);
   }
@@ -116,9 +119,12 @@ std::vector<TsrLink> linkPerFactor(const std::vector<Factor>& order, const Isome
     TsrLink fixed;
     fixed.T0_w = X_at;
     chain.push_back(fixed);
-  } else {
-    chain.back().Tw_e = chain.back().Tw_e * X_at;
+    return chain;
   }
+  chain[0].T0_w = frames[0];
+  for (std::size_t k = 0; k < chain.size(); ++k)
+    chain[k].Tw_e =
+        frames[k].inverse() * (k + 1 < chain.size() ? frames[k + 1] : Isometry3d(X_at));
   return chain;
 }
 

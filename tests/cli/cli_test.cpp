@@ -151,7 +151,8 @@ TEST(Cli, ExportWritesTsrChains) {
 TEST(Cli, ManPageAndBashCompletionFollowTheHelp) {
   CmdResult man = run("help --man");
   ASSERT_EQ(man.code, 0) << man.err;
-  EXPECT_EQ(man.out.rfind(".TH RELPOS 1 ", 0), 0u) << man.out.substr(0, 80);
+  EXPECT_EQ(man.out.rfind(".\\\" -*- coding: utf-8 -*-\n.TH RELPOS 1 ", 0), 0u)
+      << man.out.substr(0, 80);
   for (const char* command : {"solve", "batch", "table", "rules", "export"}) {
     EXPECT_NE(man.out.find(std::string(".SS ") + command + "\n"), std::string::npos) << command;
     // every option of the command's help is in the page, its hyphens as roff's minus signs
@@ -175,10 +176,11 @@ TEST(Cli, ManPageAndBashCompletionFollowTheHelp) {
       "; COMP_WORDS=(relpos so); COMP_CWORD=1; _relpos; echo \"${COMPREPLY[*]}\";"
       " COMP_WORDS=(relpos solve x.json --an); COMP_CWORD=3; _relpos; echo \"${COMPREPLY[*]}\";"
       " COMP_WORDS=(relpos solve x.json --angles \"\"); COMP_CWORD=4; _relpos;"
+      " echo \"${COMPREPLY[*]}\"; COMP_WORDS=(relpos help ex); COMP_CWORD=2; _relpos;"
       " echo \"${COMPREPLY[*]}\"'";
   CmdResult offered = runShell(complete);
   ASSERT_EQ(offered.code, 0) << offered.err;
-  EXPECT_EQ(offered.out, "solve\n--angles\ndeg rad\n");
+  EXPECT_EQ(offered.out, "solve\n--angles\ndeg rad\nexport\n");
 }
 
 TEST(Cli, SameSeedSameSamples) {
@@ -398,6 +400,12 @@ TEST(CliPlugins, APluginIsFoundByItsName) {
   CmdResult r = run("solve " + (d / "named.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["status"], "solved");
+  // A path with a folder names that file only: a stale one does not load the build's plugin.
+  CmdResult stale = run("rules --plugin /nonexistent/relpos-helical.so");
+  EXPECT_EQ(stale.code, 2);
+  EXPECT_NE(stale.err.find("/nonexistent/relpos-helical.so: no such plugin file"), std::string::npos)
+      << stale.err;
+  EXPECT_EQ(stale.err.find("nor is"), std::string::npos) << stale.err;
   // Neither a file nor a name: where it was looked for.
   CmdResult none = run("rules --plugin nonesuch");
   EXPECT_EQ(none.code, 2);

@@ -92,6 +92,13 @@ TEST(ConstraintSpec, OneSidedRangesAreOpenOnTheOtherSide) {
   EXPECT_FALSE(least.has_value);
   EXPECT_EQ(least.min, -0.5);
   EXPECT_EQ(least.max, kInf);
+  // Both, chained in either order: both bounds.
+  p.addConstraint(ConstraintSpec("distance", "floor", "tip").atLeast(-0.5).atMost(0.5))
+      .addConstraint(ConstraintSpec("distance", "floor", "tip").atMost(0.5).atLeast(-0.5));
+  for (std::size_t k : {4u, 5u}) {
+    EXPECT_EQ(p.constraints[k].min, -0.5);
+    EXPECT_EQ(p.constraints[k].max, 0.5);
+  }
 }
 
 TEST(ConstraintSpec, ExactValuesSkewLinesAndCylinderAxes) {

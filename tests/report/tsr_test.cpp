@@ -44,6 +44,9 @@ Exported checkSpec(const std::string& file, double window = 0.5) {
       continue;
     }
     ++n.chains;
+    // as personalrobotics/tsr composes a chain: later links start at the pose so far
+    for (std::size_t l = 1; l < e.chain.size(); ++l)
+      EXPECT_TRUE(e.chain[l].T0_w.isApprox(Isometry3d::Identity(), 0.0)) << file;
     // b = 0 in every link: the nearest pose the chain was built about
     const std::vector<std::array<double, 6>> zero(e.chain.size(), std::array<double, 6>{});
     const Isometry3d X0 = tsrChainPose(e.chain, zero);
@@ -78,6 +81,25 @@ TEST(TsrChain, EveryPoseDrawnFromAnExportedChainSatisfiesTheSpec) {
   // Most closed-form branches are a turn or a slide per parameter.
   EXPECT_GT(all.chains, all.branches / 2) << all.chains << " chains of " << all.branches;
   std::printf("%d chains of %d branches\n", all.chains, all.branches);
+}
+
+// A narrow range (0.2 mm of a distance, 1° of an angle) is a bound like any other.
+TEST(TsrChain, NarrowRangesExport) {
+  Problem p;
+  p.addFixedFeature("floor", Feature::makePlane({0, 0, 0}, {0, 0, 1}))
+      .addFixedFeature("post", Feature::makeLine({0, 0, 0}, {0, 0, 1}))
+      .addMobileFeature("tip", Feature::makePoint({0, 0, 0}))
+      .addMobileFeature("axis", Feature::makeLine({0, 0, 0}, {0, 0, 1}));
+  p.addConstraint(ConstraintSpec("coincident", "post", "tip"))
+      .addConstraint(ConstraintSpec("distance", "floor", "tip").range(0.0300, 0.0302))
+      .addConstraint(ConstraintSpec("angle", "post", "axis").range(0.5, 0.5 + kPi / 180));
+  const Solution s = solve(p, builtinRegistry());
+  ASSERT_EQ(s.status, Status::kSolved) << s.message;
+  for (const Branch& b : s.branches) {
+    const NearestPose near = nearestOnBranch(b, p.mobile.pose);
+    const TsrExport e = tsrChainOf(p, b, near.parameters, 0.5);
+    EXPECT_TRUE(e.exact) << b.manifold->describe() << ": " << e.why;
+  }
 }
 
 TEST(TsrChain, SomanisScenariosExport) {

@@ -59,8 +59,8 @@ class ConstraintSpec {
   ConstraintSpec(std::string type, std::string fixed_feature, std::string mobile_feature);
   ConstraintSpec& value(double v);               // exact
   ConstraintSpec& range(double min, double max);  // min <= max; min == max is value(min)
-  ConstraintSpec& atLeast(double min);            // one-sided: open above
-  ConstraintSpec& atMost(double max);             // one-sided: open below
+  ConstraintSpec& atLeast(double min);  // alone: open above; with atMost: both bounds
+  ConstraintSpec& atMost(double max);   // alone: open below
   ConstraintSpec& orientation(Orientation o);
   // false: a line-line distance measured between skew lines (docs/spec.md §1.9).
   ConstraintSpec& parallel(bool p);

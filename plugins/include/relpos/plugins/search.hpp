@@ -15,9 +15,14 @@ std::vector<std::string> pluginFoldersFor(const std::string& program_dir);
 // The folder of the running executable ("" when it cannot be told).
 std::string executableDir();
 
-// `path` itself when it names a file (or when nothing else does: loading it reports that);
-// otherwise the first of NAME, NAME.so, relpos-NAME.so in `folders`, NAME being the path's file
-// name.
+// `path` itself when it names a file or has a folder in it (a stale path must not load another
+// build; loading it reports the missing file); otherwise, a bare NAME, the first of NAME, NAME.so,
+// relpos-NAME.so in `folders` (NAME itself when none is there).
 std::string findPlugin(const std::string& path, const std::vector<std::string>& folders);
+
+// The entry of a spec's "plugins" list as it was written, when it was a bare name: `joined` is
+// the entry joined to the spec's folder `dir` (specPluginPaths); "" when the entry had a folder
+// in it (or was absolute).
+std::string bareEntry(const std::string& joined, const std::string& dir);
 
 }  // namespace relpos::plugins

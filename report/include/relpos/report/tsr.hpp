@@ -2,7 +2,8 @@
 // Branches as Task Space Region chains (Berenson et al., as personalrobotics/tsr uses them;
 // docs/spec.md §3.11, issue 17): the mobile object's pose is the product over the chain's links of
 // T0_w · Xform(b) · Tw_e, b within Bw (rows x, y, z, roll, pitch, yaw; Xform(b) the translation
-// (x, y, z) times Rz(yaw)·Ry(pitch)·Rx(roll)).
+// (x, y, z) times Rz(yaw)·Ry(pitch)·Rx(roll)). Every link after the first has T0_w = identity:
+// the libraries start each later link at the pose so far, whatever its T0_w.
 //
 // A branch has an exact chain when its poses are a product of exponentials: a turn about a fixed
 // line or a slide along a fixed direction per parameter, applied in some order to one pose of it.
