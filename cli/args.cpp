@@ -38,13 +38,14 @@ Args parseArgs(int argc, char** argv, int first) {
       return argv[++i];
     };
     if (s == "--samples")
-      a.result.samples = static_cast<int>(parseInt(s, value(), 0, 1000000));
+      a.result.samples = static_cast<int>(parseInt(s, value(), 0, 1000000)),
+      a.samples_given = true;
     else if (s == "--seed")
       a.result.seed = static_cast<std::uint64_t>(parseInt(s, value(), 0, LONG_MAX));
     else if (s == "--repeat")
       a.repeat = static_cast<int>(parseInt(s, value(), 1, 1000000));
     else if (s == "--window")
-      a.result.window = parseNonNegative(s, value());
+      a.result.window = parseNonNegative(s, value()), a.window_given = true;
     else if (s == "--format")
       a.format = value();
     else if (s == "--angles") {

@@ -27,6 +27,8 @@ struct Args {
   bool collision_option = false;  // --clearance or --collision-samples given
   bool degrees = false;           // --angles deg
   std::string format;             // export: --format
+  bool samples_given = false;     // --samples given (view's default is not 0)
+  bool window_given = false;      // --window given (view's default is the problem's size)
 };
 
 // The options after the command (argv[first]...). Throws UsageError.
@@ -64,5 +66,6 @@ int cmdRules(const Args& a, const relpos::Registry& reg);
 int cmdTable(const Args& a, const relpos::Registry& reg);
 int cmdBatch(const Args& a, const relpos::Registry& reg);
 int cmdExport(const Args& a, const relpos::Registry& reg);
+int cmdView(const Args& a, const relpos::Registry& reg);
 
 }  // namespace relpos::cli

@@ -93,6 +93,25 @@ const Command kCommands[] = {
       {"-o OUT.json", "write to OUT.json (replaced whole, only once it is complete)"}},
      cmdExport,
      true},
+    {"view",
+     "view SPEC.json [-o VIEW.html] [--samples N] [--window W] [--seed S] [--angles deg]\n"
+     "               [--collision [--clearance C] [--collision-samples N]]",
+     "Writes one self-contained HTML page showing the spec's objects, the mobile object at each "
+     "branch's nearest pose, ghosts at samples, and a slider per branch parameter that moves it. "
+     "Open it in a browser; it needs no network.",
+     {{"-o VIEW.html", "write the page to VIEW.html (default: the spec's file name with .html, "
+                       "in the current folder)"},
+      {"--samples N", "ghosts per branch, drawn uniformly within its parameter bounds "
+                      "(default 12)"},
+      {"--window W", "unbounded length parameters slide and are sampled within +-W of the "
+                     "nearest pose's (default: the problem's size, its largest coordinate)"},
+      kSeed,
+      {"--angles deg|rad", "show angles in degrees or radians (default rad)"},
+      kCollision,
+      kClearance,
+      kCollisionSamples},
+     cmdView,
+     true},
     {"help", "help [COMMAND]", "Prints the usage, or one command's help.", {}, cmdNone, false},
     {"version",
      "--version",

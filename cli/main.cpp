@@ -54,7 +54,8 @@ int run(int argc, char** argv) {
   }
   Args a = parseArgs(argc, argv, 2);
   if (a.out_given && a.out.empty()) throw InvalidInput("-o: an empty path");
-  if (a.out_given && name != "solve" && name != "batch" && name != "export")
+  if (a.out_given && name != "solve" && name != "batch" && name != "export" &&
+      name != "view")
     throw InvalidInput("-o: '" + name + "' writes to standard output only");
   relpos::Registry reg;
   relpos::registerBuiltins(reg);
