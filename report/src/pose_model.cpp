@@ -334,3 +334,86 @@ std::optional<Isometry3d> modelPose(const PoseModel& model, int dof, const Param
 }
 
 }  // namespace relpos
+
+namespace relpos {
+
+std::optional<std::vector<ScrewFactor>> rigidProduct(const Problem& problem, const Branch& branch,
+                                                     const Params& at, double window,
+                                                     std::string* why, bool* windowed) {
+  if (auto order = screwProduct(problem, branch, at, window, false, why, windowed)) return order;
+  const Manifold& m = *branch.manifold;
+  const Isometry3d X_at = m.pose(at);
+  const double scale = std::max({1.0, problem.lengthScale(), X_at.translation().norm()});
+  const std::vector<Params> points = checkPoints(m, at, window);
+  const Vector3d pivot = pivotOf(m, at, X_at, scale);
+  const auto separable = separableProduct(m, at, X_at, pivot, points, scale);
+  if (!separable) return std::nullopt;  // *why: screwProduct's
+  std::vector<ScrewFactor> orients, moves;
+  for (const ScrewFactor& f : *separable) (f.orients ? orients : moves).push_back(f);
+  // Rigid, with its bounds: a turn about `through` (or a slide) over the parameter's box.
+  bool open = false;
+  auto rigid = [&](ScrewFactor f, const Vector3d& through) {
+    const Parameter p = m.parameter(f.param);
+    double lo, hi;
+    boxOf(p, at[f.param], window, &lo, &hi);
+    open = open || (!p.periodic && !(std::isfinite(p.min) && std::isfinite(p.max)));
+    f.orients = f.moves = true;
+    if (f.turn) f.point = through;
+    f.lo = f.rate * (lo - at[f.param]), f.hi = f.rate * (hi - at[f.param]);
+    if (f.lo > f.hi) std::swap(f.lo, f.hi);
+    return f;
+  };
+  // The pivot slides, or turns about one axis first (a fingertip around a can); the orientation
+  // then turns freely about that axis too, so the turn carries the whole object and the
+  // orientation's own turn about it, less the carried one, is again a full turn.
+  const auto turning = std::find_if(moves.begin(), moves.end(),
+                                    [](const ScrewFactor& f) { return f.turn; });
+  const bool carried = turning != moves.end();
+  if (carried) {
+    const bool first = turning == moves.begin() &&
+                       std::none_of(moves.begin() + 1, moves.end(),
+                                    [](const ScrewFactor& f) { return f.turn; });
+    const bool free_about_it = !orients.empty() && m.parameter(orients[0].param).periodic &&
+                               std::abs(orients[0].axis.dot(turning->axis)) > 1.0 - 1e-12;
+    if (!first || !free_about_it) {
+      *why = "the branch's position turns about an axis its orientation does not turn freely "
+             "about, which no TSR chain makes";
+      return std::nullopt;
+    }
+  }
+  const Vector3d s_at = X_at * pivot;
+  std::vector<ScrewFactor> chain;
+  for (const ScrewFactor& f : moves) chain.push_back(rigid(f, f.point));
+  for (std::size_t k = 0; k < orients.size(); ++k) {
+    ScrewFactor f = rigid(orients[k], s_at);
+    if (k == 0 && carried) {  // the orientation's turn less the carried one: any angle
+      f.axis = turning->axis;
+      f.rate = orients[0].rate * orients[0].axis.dot(turning->axis);
+      f.lo = -kPi, f.hi = kPi;
+    }
+    chain.push_back(f);
+  }
+  // Checked on the branch: the carried turn's angle taken from the orientation's.
+  for (const Params& t : points) {
+    Isometry3d X = Isometry3d::Identity();
+    double carried_angle = 0.0;
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const ScrewFactor& f = chain[k];
+      double x = f.rate * (t[f.param] - at[f.param]);
+      if (carried && k == 0) carried_angle = x;
+      if (carried && k == moves.size()) x -= carried_angle;
+      X = X * exponential(f, x);
+    }
+    X = X * X_at;
+    const Isometry3d Y = m.pose(t);
+    if (!((X.translation() - Y.translation()).norm() <= 1e-9 * scale) ||
+        !(rotationDistance(X.linear(), Y.linear()) <= 1e-9)) {
+      *why = "the branch's separable product is no chain of rigid turns and slides";
+      return std::nullopt;
+    }
+  }
+  *windowed = open;
+  return chain;
+}
+
+}  // namespace relpos

@@ -118,7 +118,7 @@ Isometry3d tsrChainPose(const std::vector<TsrLink>& chain,
 TsrExport tsrChainOf(const Problem& problem, const Branch& branch, const Params& at,
                      double window) {
   TsrExport out;
-  auto order = screwProduct(problem, branch, at, window, false, &out.why, &out.windowed);
+  auto order = rigidProduct(problem, branch, at, window, &out.why, &out.windowed);
   if (!order) return out;
   const Isometry3d X_at = branch.manifold->pose(at);
   TsrLink single;

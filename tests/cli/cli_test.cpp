@@ -120,8 +120,8 @@ TEST(Cli, ExportWritesTsrChains) {
       for (const auto& row : link["Bw"]) EXPECT_LE(row[0].get<double>(), row[1].get<double>());
     }
   }
-  // A branch without a chain says why.
-  CmdResult c = run("export " RELPOS_DATA_DIR "/scenarios/scenario-c-cylinder-grasp.json --format tsr");
+  // A branch without a chain (a second angle that follows the first nonlinearly) says why.
+  CmdResult c = run("export " RELPOS_DATA_DIR "/examples/two-angles.json --format tsr");
   ASSERT_EQ(c.code, 0) << c.err;
   const nlohmann::json cdoc = nlohmann::json::parse(c.out);
   EXPECT_TRUE(cdoc["branches"][0]["tsr_chain"].is_null());

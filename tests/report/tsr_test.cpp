@@ -103,9 +103,12 @@ TEST(TsrChain, NarrowRangesExport) {
 }
 
 TEST(TsrChain, SomanisScenariosExport) {
-  // A (plane distance), B (seam welding), D (soda-can grasp), E (tray grasp): every branch.
+  // A (plane distance), B (seam welding), C (cylinder grasp: the fingers' point turns around the
+  // cylinder, which the orientation turns freely about), D (soda-can grasp), E (tray grasp):
+  // every branch.
   for (const char* name : {"scenario-a-plane-distance", "scenario-b-seam-welding",
-                           "scenario-d-soda-can-grasp", "scenario-e-tray-grasp"}) {
+                           "scenario-c-cylinder-grasp", "scenario-d-soda-can-grasp",
+                           "scenario-e-tray-grasp"}) {
     const Exported n = checkSpec(std::string(RELPOS_DATA_DIR) + "/scenarios/" + name + ".json");
     EXPECT_GT(n.branches, 0) << name;
     EXPECT_EQ(n.chains, n.branches) << name;

@@ -41,6 +41,15 @@ std::optional<std::vector<ScrewFactor>> screwProduct(const Problem& problem, con
                                                      const Params& at, double window, bool screws,
                                                      std::string* why, bool* windowed);
 
+// The branch as rigid turns and slides only (a TSR chain's factors, in order, with their bounds
+// lo/hi): screwProduct without screws, or a separable product rewritten as one where it can be —
+// its position sliding, or first turning about an axis its orientation turns freely about (a
+// grasp around a can: the turn then carries the whole object, and the orientation's remaining
+// turn about that axis is a full one). Checked on the branch like screwProduct.
+std::optional<std::vector<ScrewFactor>> rigidProduct(const Problem& problem, const Branch& branch,
+                                                     const Params& at, double window,
+                                                     std::string* why, bool* windowed);
+
 // A branch's poses for a picture: the screw product when there is one, or the separable one (the
 // orientation a product of turns of R(θ*), the position a product of rigid motions of t(θ*)),
 // checked likewise; else the poses on a grid
