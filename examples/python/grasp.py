@@ -2,11 +2,14 @@
 
 The gripper's tool centre point (TCP) must be on the can's axis, its approach axis (z)
 horizontal, meeting the can's axis at a right angle, and the TCP between 3 and 9 cm above the
-table. relpos returns every such pose; this prints the branch nearest to where the gripper is now
-and that pose.
+table. relpos returns every such pose; this prints the branch nearest to where the gripper is now,
+its Task Space Region chain (for a planner), writes a picture of every branch (grasp.html, or the
+path given) and prints the nearest pose.
 
     PYTHONPATH=build/python python3 examples/python/grasp.py
 """
+import sys
+
 import numpy as np
 
 import relpos
@@ -34,6 +37,11 @@ if __name__ == "__main__":
     best = solution.best
     for p in best.parameters:
         print(f"  parameter {p['name']}: {p['kind']} in [{p['min']:.3f}, {p['max']:.3f}]")
+    tsr = best.tsr()  # for a planner: T0_w . Xform(b) . Tw_e per link, b within Bw
+    print(f"TSR chain: {len(tsr['tsr_chain'])} link(s)" if tsr["exact"] else f"no TSR: {tsr['why']}")
+    for link in tsr["tsr_chain"] or []:
+        print("  Bw (x y z roll pitch yaw):", np.round(link["Bw"], 4).tolist())
+    print("picture:", solution.view(sys.argv[1] if len(sys.argv) > 1 else "grasp.html"))
     print(f"nearest pose, {best.result['nearest']['distance']:.3f} from the gripper's:")
     for row in best.pose(best.nearest_parameters):
         print(" ".join(f"{v:.12f}" for v in row))

@@ -155,6 +155,13 @@ class Branch:
         +-window of the nearest pose's): (parameters as an n x dof array, poses as n x 4 x 4)."""
         return self._ref.sample(int(n), float(window), int(seed))
 
+    def tsr(self, *, window=1.0):
+        """The branch as a Task Space Region chain (docs/spec.md section 3.11): a dict with
+        ``exact``, ``why`` (None when exact), ``tsr_chain`` (None, or one dict per link with 4x4
+        ``T0_w`` and ``Tw_e`` and the 6x2 bounds ``Bw``: x, y, z, roll, pitch, yaw) and, when an
+        unbounded length was bounded to +-window, ``window``."""
+        return self._ref.tsr(float(window))
+
     def __repr__(self):
         return f"<relpos.Branch {self.index}: {self.dof} DOF, {self.manifold}>"
 
@@ -194,6 +201,20 @@ class Solution:
 
     def as_dict(self):
         return json.loads(self._solved.json)
+
+    def view(self, path, *, samples=12, window=None, angles="rad"):
+        """Writes the page ``relpos view`` writes (docs/spec.md section 3.12) to ``path``: the
+        objects, each branch's nearest pose, ``samples`` ghosts per branch and a slider per
+        parameter; unbounded lengths within +-window (default: the problem's size). Returns
+        ``path``."""
+        if angles not in ("rad", "deg"):
+            raise ValueError("angles: 'rad' or 'deg'")
+        if window is None:
+            window = self._solved.size
+        page = self._solved.page(int(samples), float(window), angles == "deg")
+        with open(path, "w", encoding="utf-8") as out:
+            out.write(page)
+        return path
 
     def __repr__(self):
         return f"<relpos.Solution {self.status}: {len(self.branches)} branches>"

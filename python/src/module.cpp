@@ -24,6 +24,8 @@
 #include "relpos/plugins/loader.hpp"
 #include "relpos/plugins/search.hpp"
 #include "relpos/report/evaluate.hpp"
+#include "relpos/report/tsr.hpp"
+#include "relpos/viewer/page.hpp"
 
 namespace py = pybind11;
 
@@ -126,6 +128,7 @@ class Solved {
   relpos::Solution solution;
   relpos::Report report;
   std::string json;
+  std::string spec_dir;  // meshes' relative paths are relative to it
 
   int branchCount() const {
     // A report made after a plugin threw has no branch (unhandledAfterThrow): none to run.
@@ -147,6 +150,7 @@ py::tuple solveParsed(relpos::ParseResult r, const std::string& spec_dir,
   auto s = std::make_shared<Solved>();
   s->registry = std::move(reg);
   s->problem = std::move(*r.problem);
+  s->spec_dir = spec_dir;
   relpos::ReportOptions ro;
   ro.samples = o.samples;
   ro.window = o.window;
@@ -295,6 +299,58 @@ py::list branchParameters(const BranchRef& b) {
   return out;
 }
 
+// The branch as a TSR chain (docs/spec.md §3.11): exact, why (when not), window (when bounded
+// by it) and the chain's links as numpy arrays.
+py::dict branchTsr(const BranchRef& b, double window) {
+  if (!(window > 0.0) || !std::isfinite(window)) throw py::value_error("window must be > 0");
+  relpos::TsrExport e;
+  if (b.branch().exact)
+    e = relpos::tsrChainOf(b.solved->problem, b.branch(), b.report().nearest.parameters, window);
+  else
+    e.why = "a numeric branch (a certified chart of a piece of the set), not a closed form";
+  py::dict d;
+  d["exact"] = e.exact;
+  d["why"] = e.exact ? py::object(py::none()) : py::object(py::str(e.why));
+  if (e.windowed) d["window"] = window;
+  if (!e.exact) {
+    d["tsr_chain"] = py::none();
+    return d;
+  }
+  py::list chain;
+  for (const relpos::TsrLink& l : e.chain) {
+    Eigen::Matrix<double, 6, 2, Eigen::RowMajor> Bw;
+    for (int r = 0; r < 6; ++r) Bw(r, 0) = l.Bw[r][0], Bw(r, 1) = l.Bw[r][1];
+    py::dict link;
+    link["T0_w"] = toMatrix(l.T0_w);
+    link["Tw_e"] = toMatrix(l.Tw_e);
+    link["Bw"] = Bw;
+    chain.append(link);
+  }
+  d["tsr_chain"] = chain;
+  return d;
+}
+
+// The page `relpos view` writes (docs/spec.md §3.12), for a solved spec; ValueError when a mesh
+// cannot be read.
+std::string solvedPage(const Solved& s, int samples, double window, bool degrees) {
+  relpos::ReportOptions ro;
+  ro.samples = samples;
+  ro.window = window;
+  relpos::viewer::ViewOptions view;
+  view.window = window;
+  view.degrees = degrees;
+  view.spec_dir = s.spec_dir;
+  std::string html;
+  std::vector<relpos::Diagnostic> errors, warnings;
+  {
+    py::gil_scoped_release unlocked;
+    const relpos::Report report = relpos::evaluate(s.problem, s.solution, ro);
+    relpos::viewer::writePage(s.problem, s.solution, report, view, &html, &errors, &warnings);
+  }
+  if (!errors.empty()) throw py::value_error(errors[0].path + ": " + errors[0].message);
+  return html;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_relpos, m) {
@@ -312,9 +368,16 @@ PYBIND11_MODULE(_relpos, m) {
   py::class_<Solved, std::shared_ptr<Solved>>(m, "Solved")
       .def_readonly("json", &Solved::json)
       .def_property_readonly("branch_count", &Solved::branchCount)
-      .def("branch", [](const std::shared_ptr<Solved>& s, int i) {
-        s->branch(i);  // IndexError for a bad index
-        return BranchRef{s, i};
+      .def("branch",
+           [](const std::shared_ptr<Solved>& s, int i) {
+             s->branch(i);  // IndexError for a bad index
+             return BranchRef{s, i};
+           })
+      .def("page", &solvedPage)
+      // The problem's size (its largest coordinate; 1 when all are 0): the view's window.
+      .def_property_readonly("size", [](const Solved& s) {
+        const double size = s.problem.lengthScale();
+        return size > 0.0 ? size : 1.0;
       });
   py::class_<BranchRef>(m, "BranchRef")
       .def_property_readonly("index", [](const BranchRef& b) { return b.index; })
@@ -324,7 +387,8 @@ PYBIND11_MODULE(_relpos, m) {
       .def_property_readonly("parameters", &branchParameters)
       .def("pose", &branchPose)
       .def("nearest", &branchNearest)
-      .def("sample", &branchSample);
+      .def("sample", &branchSample)
+      .def("tsr", &branchTsr);
   m.def("solve_file", &solveFile);
   m.def("solve_text", &solveText);
   m.def("load_plugin", [](const std::string& path) { plugins().load(path); });

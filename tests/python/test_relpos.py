@@ -305,13 +305,69 @@ class ProblemTest(unittest.TestCase):
             relpos.problem.point([0, 0])
 
 
+def xform(b):
+    """TSR's Xform(b): translation (x, y, z) times Rz(yaw) Ry(pitch) Rx(roll)."""
+    x, y, z, roll, pitch, yaw = b
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch),
+                              math.cos(yaw), math.sin(yaw))
+    X = np.eye(4)
+    X[:3, :3] = (np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
+                 @ np.array([[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]])
+                 @ np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]]))
+    X[:3, 3] = [x, y, z]
+    return X
+
+
+class PlannerAndPictureTest(unittest.TestCase):
+    def test_every_pose_drawn_from_a_tsr_chain_satisfies_the_spec(self):
+        rng = np.random.default_rng(3)
+        for name in ("scenario-c-cylinder-grasp", "scenario-d-soda-can-grasp"):
+            path = os.path.join(SOURCE, "data", "scenarios", name + ".json")
+            for branch in relpos.Solution(path).branches:
+                tsr = branch.tsr(window=0.3)
+                self.assertTrue(tsr["exact"], tsr["why"])
+                poses = []
+                for _ in range(50):
+                    X = np.eye(4)
+                    for link in tsr["tsr_chain"]:
+                        Bw = link["Bw"]
+                        self.assertEqual(Bw.shape, (6, 2))
+                        b = Bw[:, 0] + (Bw[:, 1] - Bw[:, 0]) * rng.random(6)
+                        X = X @ link["T0_w"] @ xform(b) @ link["Tw_e"]
+                    poses.append(X)
+                self.assertLessEqual(max(violations(path, poses)), 1e-9, name)
+        with self.assertRaises(ValueError):
+            relpos.Solution(path).branches[0].tsr(window=0)
+
+    def test_view_writes_the_page(self):
+        path = os.path.join(SOURCE, "data", "scenarios", "scenario-d-soda-can-grasp.json")
+        solution = relpos.Solution(path)
+        with tempfile.TemporaryDirectory() as d:
+            page = solution.view(os.path.join(d, "can.html"), samples=2, angles="deg")
+            with open(page, encoding="utf-8") as f:
+                text = f.read()
+        start = text.index('type="application/json">') + len('type="application/json">')
+        scene = json.loads(text[start:text.index("</script>", start)])
+        self.assertEqual(len(scene["branches"]), len(solution.branches))
+        self.assertEqual(scene["angles"], "deg")
+        self.assertTrue(all(len(b["samples"]) == 2 for b in scene["branches"]))
+        with self.assertRaises(ValueError):
+            solution.view(os.path.join(d, "x.html"), angles="grad")
+
+
 class ExampleTest(unittest.TestCase):
     def test_the_readme_example_prints_a_valid_grasp_pose(self):
         script = os.path.join(SOURCE, "examples", "python", "grasp.py")
-        out = subprocess.run([os.environ.get("PYTHON", "python3"), script], capture_output=True,
-                             text=True, check=True, env=dict(os.environ))
+        with tempfile.TemporaryDirectory() as d:
+            page = os.path.join(d, "grasp.html")
+            out = subprocess.run([os.environ.get("PYTHON", "python3"), script, page],
+                                 capture_output=True, text=True, check=True, env=dict(os.environ))
+            with open(page, encoding="utf-8") as f:
+                self.assertTrue(f.read().startswith("<!DOCTYPE html>"))
         lines = out.stdout.splitlines()
         self.assertTrue(lines[0].startswith("status: solved"), out.stdout)
+        self.assertRegex(out.stdout, r"TSR chain: [1-6] link\(s\)")
+        self.assertIn("picture: " + page, out.stdout)
         # the example's last four lines: the grasp pose, a 4x4 matrix
         X = np.array([[float(v) for v in line.split()] for line in lines[-4:]])
         self.assertEqual(X.shape, (4, 4))
