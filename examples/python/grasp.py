@@ -6,7 +6,7 @@ table. relpos returns every such pose; this prints the branch nearest to where t
 its Task Space Region chain (for a planner), writes a picture of every branch (grasp.html, or the
 path given) and prints the nearest pose.
 
-    PYTHONPATH=build/python python3 examples/python/grasp.py
+    PYTHONPATH=build/python /usr/bin/python3 examples/python/grasp.py
 """
 import sys
 

@@ -63,7 +63,7 @@ class Plugins {
 
  private:
   static std::shared_ptr<const relpos::Registry> build(const std::vector<std::string>& paths,
-                                                      std::string* error) {
+                                                       std::string* error) {
     auto reg = std::make_shared<relpos::Registry>();
     relpos::registerBuiltins(*reg);
     for (const std::string& p : paths) {

@@ -2,13 +2,12 @@
 // branch is a product of exponentials, X(θ) = Π_k exp(ξ_k (θ_k − θ*_k)) · X(θ*), check that on
 // the branch pose by pose, and write each factor as a link (or several as one, when they fit one
 // TSR's frame).
-#include "relpos/report/tsr.hpp"
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 #include "relpos/report/pose_model.hpp"
+#include "relpos/report/tsr.hpp"
 
 namespace relpos {
 namespace {
@@ -47,8 +46,7 @@ std::vector<TsrLink> linkPerFactor(const std::vector<ScrewFactor>& order, const 
   }
   chain[0].T0_w = frames[0];
   for (std::size_t k = 0; k < chain.size(); ++k)
-    chain[k].Tw_e =
-        frames[k].inverse() * (k + 1 < chain.size() ? frames[k + 1] : Isometry3d(X_at));
+    chain[k].Tw_e = frames[k].inverse() * (k + 1 < chain.size() ? frames[k + 1] : Isometry3d(X_at));
   return chain;
 }
 
@@ -106,10 +104,10 @@ Isometry3d tsrChainPose(const std::vector<TsrLink>& chain,
     const std::array<double, 6>& v = b[k];
     Isometry3d xform = Isometry3d::Identity();
     xform.translation() = Vector3d(v[0], v[1], v[2]);
-    xform.linear() = (Eigen::AngleAxisd(v[5], Vector3d::UnitZ()) *
-                      Eigen::AngleAxisd(v[4], Vector3d::UnitY()) *
-                      Eigen::AngleAxisd(v[3], Vector3d::UnitX()))
-                         .toRotationMatrix();
+    xform.linear() =
+        (Eigen::AngleAxisd(v[5], Vector3d::UnitZ()) * Eigen::AngleAxisd(v[4], Vector3d::UnitY()) *
+         Eigen::AngleAxisd(v[3], Vector3d::UnitX()))
+            .toRotationMatrix();
     X = X * chain[k].T0_w * xform * chain[k].Tw_e;
   }
   return X;
@@ -122,8 +120,8 @@ TsrExport tsrChainOf(const Problem& problem, const Branch& branch, const Params&
   if (!order) return out;
   const Isometry3d X_at = branch.manifold->pose(at);
   TsrLink single;
-  out.chain = oneLink(*order, X_at, &single) ? std::vector<TsrLink>{single}
-                                             : linkPerFactor(*order, X_at);
+  out.chain =
+      oneLink(*order, X_at, &single) ? std::vector<TsrLink>{single} : linkPerFactor(*order, X_at);
   out.exact = true;
   return out;
 }

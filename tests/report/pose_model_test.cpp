@@ -117,9 +117,9 @@ TEST(PoseModel, RandomProblemsAreTheirModels) {
     KnownProblem kp = emptyKnownProblem(rng);
     const int constraints = rng.integer(1, 2);
     for (int c = 0; c < constraints; ++c)
-      addConstraint(kp, kinds[static_cast<std::size_t>(
-                              rng.integer(0, static_cast<int>(kinds.size()) - 1))],
-                    rng);
+      addConstraint(
+          kp, kinds[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kinds.size()) - 1))],
+          rng);
     checkModels(kp.problem, "random problem " + std::to_string(trial), rng, all);
   }
   EXPECT_GT(all.branches, 300);

@@ -118,6 +118,7 @@ async function viewSpec(entry) {
   }
   check(errors.length === 0, `${name}: the page threw: ${errors.join('; ')}`);
   await page.close();
+  console.log(`${name}: ${scene.branches.length} branches, ${poses.length} poses shown, ${stats.drawn} pixels drawn`);
   if (poses.length === 0) return;
   // Every pose shown, judged by the evaluator.
   const out = execFileSync(poseCheck, [spec], { input: poses.map(rowMajor).join('\n') + '\n' }).toString().trim().split('\n');
@@ -125,7 +126,6 @@ async function viewSpec(entry) {
     const [v, which] = line.split(' ').map(Number);
     check(v <= 1e-7 * Math.max(1, size), `${name}: a pose the page showed breaks constraint ${which} by ${v}`);
   });
-  console.log(`${name}: ${scene.branches.length} branches, ${poses.length} poses shown and checked, ${stats.drawn} pixels drawn`);
 }
 
 try {

@@ -41,8 +41,7 @@ bool meshJson(const ObjectSpec& o, const std::string& json_path, const std::stri
               std::vector<Diagnostic>* warnings) {
   *out = nullptr;
   if (o.mesh.empty()) return true;
-  const std::string path =
-      o.mesh[0] == '/' || spec_dir.empty() ? o.mesh : spec_dir + "/" + o.mesh;
+  const std::string path = o.mesh[0] == '/' || spec_dir.empty() ? o.mesh : spec_dir + "/" + o.mesh;
   collision::Mesh mesh;
   std::string error;
   std::vector<std::string> notes;
@@ -79,8 +78,7 @@ bool objectJson(const ObjectSpec& o, const std::string& json_path, const std::st
 
 json motionJson(const ParameterMotion& m) {
   json j = {{"type", toString(m.type)}};
-  if (m.type == ParameterMotion::Type::kNone || m.type == ParameterMotion::Type::kUnknown)
-    return j;
+  if (m.type == ParameterMotion::Type::kNone || m.type == ParameterMotion::Type::kUnknown) return j;
   j["axis"] = vec(m.axis);
   if (m.type != ParameterMotion::Type::kTranslation) j["point"] = vec(m.point);
   if (m.type == ParameterMotion::Type::kScrew) j["pitch"] = m.pitch;
@@ -120,8 +118,8 @@ json modelJson(const PoseModel& m, int dof) {
   return j;
 }
 
-json branchJson(const Problem& problem, const Branch& branch, const Report& report,
-                std::size_t i, const ViewOptions& options) {
+json branchJson(const Problem& problem, const Branch& branch, const Report& report, std::size_t i,
+                const ViewOptions& options) {
   const BranchReport& br = report.branches[i];
   const int dof = br.dof;
   json params = json::array(), theta = json::array();
@@ -139,8 +137,8 @@ json branchJson(const Problem& problem, const Branch& branch, const Report& repo
   }
   PoseModel model;
   try {
-    model = poseModelOf(problem, branch, br.nearest.parameters, options.window,
-                        options.table_poses);
+    model =
+        poseModelOf(problem, branch, br.nearest.parameters, options.window, options.table_poses);
   } catch (const std::exception&) {  // a plugin's pose function that throws at the nearest pose
     model = PoseModel();
     model.at = br.nearest.parameters;
@@ -156,8 +154,10 @@ json branchJson(const Problem& problem, const Branch& branch, const Report& repo
             {"manifold", br.manifold},
             {"dof", dof},
             {"exact", br.exact},
-            {"nearest", {{"parameters", theta}, {"pose", matrix(br.nearest.pose)},
-                         {"distance", br.nearest.distance}}},
+            {"nearest",
+             {{"parameters", theta},
+              {"pose", matrix(br.nearest.pose)},
+              {"distance", br.nearest.distance}}},
             {"parameters", params},
             {"model", modelJson(model, dof)},
             {"samples", samples}};
@@ -166,10 +166,10 @@ json branchJson(const Problem& problem, const Branch& branch, const Report& repo
     json contacts = json::array();
     for (const Contact& k : c.nearest_contacts)
       contacts.push_back({{"object", k.object}, {"depth", k.depth}});
-    j["collision"] = {{"nearest_collides", c.nearest_collides},
-                      {"contacts", contacts},
-                      {"nearest_free", c.has_nearest_free ? matrix(c.nearest_free.pose)
-                                                          : json(nullptr)}};
+    j["collision"] = {
+        {"nearest_collides", c.nearest_collides},
+        {"contacts", contacts},
+        {"nearest_free", c.has_nearest_free ? matrix(c.nearest_free.pose) : json(nullptr)}};
   }
   return j;
 }
@@ -189,8 +189,8 @@ bool sceneJson(const Problem& problem, const Solution& solution, const Report& r
     json o;
     // An obstacle's own extent would size the features to a room: it is left out.
     double unused = 0.0;
-    ok = objectJson(problem.obstacles[i], "obstacles[" + std::to_string(i) + "]",
-                    options.spec_dir, &o, &unused, errors, warnings) &&
+    ok = objectJson(problem.obstacles[i], "obstacles[" + std::to_string(i) + "]", options.spec_dir,
+                    &o, &unused, errors, warnings) &&
          ok;
     obstacles.push_back(o);
   }

@@ -74,8 +74,8 @@ struct PoseModel {
   std::vector<bool> valid;
 };
 
-PoseModel poseModelOf(const Problem& problem, const Branch& branch, const Params& at,
-                      double window, int table_poses = 4096);
+PoseModel poseModelOf(const Problem& problem, const Branch& branch, const Params& at, double window,
+                      int table_poses = 4096);
 
 // The model's pose at θ (a table's node nearest θ); nullopt for a node where the branch threw.
 std::optional<Isometry3d> modelPose(const PoseModel& model, int dof, const Params& theta);

@@ -15,10 +15,10 @@
 namespace relpos::viewer {
 
 struct ViewOptions {
-  double window = 1.0;      // unbounded length parameters' sliders: ± window about the nearest pose
-  bool degrees = false;     // angles shown in degrees (--angles deg)
-  std::string spec_dir;     // meshes' relative paths are relative to it
-  int table_poses = 4096;   // a branch that is no product of screws: poses on a grid, at most these
+  double window = 1.0;     // unbounded length parameters' sliders: ± window about the nearest pose
+  bool degrees = false;    // angles shown in degrees (--angles deg)
+  std::string spec_dir;    // meshes' relative paths are relative to it
+  int table_poses = 4096;  // a branch that is no product of screws: poses on a grid, at most these
 };
 
 // The page of `problem`, solved as `solution`, reported as `report` (its nearest poses, samples
