@@ -4,6 +4,7 @@
 //  - each branch's copy of the mobile object starts at the branch's nearest pose;
 //  - dragging a slider with the mouse (and Home/End on the keyboard) moves the object, and the
 //    picture with it;
+//  - with --collision, the nearest collision-free pose is shown where the result has one;
 //  - every pose the page shows satisfies the spec, judged by the tests' evaluator (pose_check,
 //    written from docs/spec.md alone), not by the page or by relpos.
 // usage: node browser_test.mjs OUT_DIR SPEC[::collision]...
@@ -77,6 +78,12 @@ async function viewSpec(entry) {
     const b = scene.branches[i];
     await page.click(`#branch-${i}`);
     check((await page.evaluate(() => window.relposViewer.branch())) === i, `${name}: clicking branch ${i} did not choose it`);
+    // With collision filtering: the nearest collision-free pose as a ghost where there is one.
+    if (b.collision) {
+      const free = await page.evaluate(() => window.relposViewer.freeMatrix());
+      const expected = b.collision.nearest_free;
+      check(expected === null ? free === null : free !== null && distance(free, expected) <= 1e-12 * Math.max(1, size), `${name} #${i}: the collision-free ghost is not at the nearest free pose`);
+    }
     const start = await page.evaluate(() => window.relposViewer.mobileMatrix());
     check(start && distance(start, b.nearest.pose) <= 1e-9 * Math.max(1, size), `${name} #${i}: the object is not at the nearest pose`);
     if (start) poses.push(start);

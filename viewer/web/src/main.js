@@ -110,6 +110,9 @@ function place() {
   const copy = copies[state.branch];
   copy.visible = X !== null;
   if (X) setPose(copy, X);
+  // The collision verdict is the nearest pose's: red there only.
+  const atNearest = state.theta.every((v, k) => v === b.nearest.parameters[k]);
+  paint(copy, atNearest && collides(state.branch) ? colours.collides : colours.mobile, 1, true);
   panel.showPose(X);
   render();
 }
@@ -122,7 +125,6 @@ function select(i) {
     setPose(g, matrixOf(scene.branches[k].nearest.pose));
     g.visible = k === i || state.showOthers;
     paint(g, k === i ? colours.mobile : 0xb9bcc4, k === i ? 1 : 0.25);
-    if (k === i && collides(k)) paint(g, colours.collides, 1, true);
   });
   const nearestFree = b.collision ? b.collision.nearest_free : null;
   free.visible = nearestFree !== null;
@@ -174,6 +176,7 @@ window.relposViewer = {
   theta: () => state.theta.slice(),
   select,
   mobileMatrix: () => (state.branch >= 0 && copies[state.branch].visible ? copies[state.branch].matrix.toArray() : null),
+  freeMatrix: () => (free.visible ? free.matrix.toArray() : null),
   stats() {
     render();
     const gl = renderer.getContext();
