@@ -1,13 +1,14 @@
-// A branch as a TSR chain (relpos/report/tsr.hpp): find an order of its parameters in which the
-// branch is a product of exponentials, X(θ) = Π_k exp(ξ_k (θ_k − θ*_k)) · X(θ*), check that on
-// the branch pose by pose, and write each factor as a link (or several as one, when they fit one
-// TSR's frame).
+// A branch as a TSR chain (relpos/report/tsr.hpp): the branch as a product of rigid exponentials,
+// X(θ) = Π_k exp(ξ_k (θ_k − θ*_k)) · X(θ*), checked on the branch pose by pose (rigidProduct,
+// relpos/report/pose_model.hpp), each factor written as a link (or several as one, when they fit
+// one TSR's frame).
+#include "relpos/report/tsr.hpp"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 #include "relpos/report/pose_model.hpp"
-#include "relpos/report/tsr.hpp"
 
 namespace relpos {
 namespace {
