@@ -13,6 +13,7 @@ exit-2 message does. Results are those of ``relpos solve`` (docs/spec.md section
 """
 
 import json
+import math
 import os
 import warnings
 
@@ -209,8 +210,12 @@ class Solution:
         ``path``."""
         if angles not in ("rad", "deg"):
             raise ValueError("angles: 'rad' or 'deg'")
+        if int(samples) < 0:
+            raise ValueError("the number of samples must be >= 0")
         if window is None:
             window = self._solved.size
+        if not (math.isfinite(float(window)) and float(window) >= 0):
+            raise ValueError("window must be a finite number >= 0")
         page = self._solved.page(int(samples), float(window), angles == "deg")
         with open(path, "w", encoding="utf-8") as out:
             out.write(page)

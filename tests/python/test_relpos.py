@@ -351,8 +351,9 @@ class PlannerAndPictureTest(unittest.TestCase):
         self.assertEqual(len(scene["branches"]), len(solution.branches))
         self.assertEqual(scene["angles"], "deg")
         self.assertTrue(all(len(b["samples"]) == 2 for b in scene["branches"]))
-        with self.assertRaises(ValueError):
-            solution.view(os.path.join(d, "x.html"), angles="grad")
+        for bad in ({"angles": "grad"}, {"samples": -1}, {"window": float("nan")}):
+            with self.assertRaises(ValueError, msg=str(bad)):
+                solution.view(os.path.join(d, "x.html"), **bad)
 
 
 class ExampleTest(unittest.TestCase):
