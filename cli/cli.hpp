@@ -56,6 +56,12 @@ std::unique_ptr<relpos::collision::Scene> loadScene(const std::string& file,
                                                     const relpos::Problem& pb,
                                                     relpos::collision::MeshCache& cache);
 
+// The report of a solved spec file into *report; with `collision`, against its meshes. False when
+// the meshes cannot be read (their problems on stderr); a throw while reading them is an answer
+// (unhandledAfterThrow), as when the filter itself throws.
+bool reportOf(const std::string& file, const relpos::Problem& pb, const relpos::Solution& sol,
+              const relpos::ReportOptions& options, bool collision, relpos::Report* report);
+
 // Loads, in order, the plugins of RELPOS_PLUGIN_PATH, of --plugin, and of the "plugins" lists of
 // the specs the command will read. The first failure is one line on stderr; false then.
 bool loadPlugins(const std::string& cmd, const Args& a, relpos::Registry& reg);

@@ -1,7 +1,9 @@
 // Finding, reading and reporting on spec files: what every command that reads specs shares.
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,27 @@ std::unique_ptr<relpos::collision::Scene> loadScene(const std::string& file,
                                              &errors, &warnings);
   printDiagnostics(file, errors, warnings);
   return scene;
+}
+
+bool reportOf(const std::string& file, const relpos::Problem& pb, const relpos::Solution& sol,
+              const relpos::ReportOptions& options, bool collision, relpos::Report* report) {
+  if (!collision) {
+    relpos::evaluate(pb, sol, options, *report);
+    return true;
+  }
+  relpos::collision::MeshCache cache;
+  std::unique_ptr<relpos::collision::Scene> scene;
+  try {
+    scene = loadScene(file, pb, cache);
+  } catch (const std::exception& e) {
+    relpos::evaluate(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
+                     options, *report);
+    report->collision_checked = true;
+    return true;
+  }
+  if (!scene) return false;
+  relpos::evaluate(pb, sol, options, *report, scene.get());
+  return true;
 }
 
 std::string readAll(std::istream& in) {

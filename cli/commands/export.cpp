@@ -31,11 +31,7 @@ nlohmann::json tsrBranch(const relpos::Problem& pb, const relpos::Branch& b, std
   j["manifold"] = b.manifold->describe();
   j["dof"] = b.manifold->dof();
   const relpos::NearestPose near = relpos::nearestOnBranch(b, pb.mobile.pose);
-  relpos::TsrExport e;
-  if (b.exact)
-    e = relpos::tsrChainOf(pb, b, near.parameters, window);
-  else
-    e.why = "a numeric branch (a certified chart of a piece of the set), not a closed form";
+  const relpos::TsrExport e = relpos::tsrChainOf(pb, b, near.parameters, window);
   j["exact"] = e.exact;
   if (!e.exact) {
     j["tsr_chain"] = nullptr;
@@ -80,8 +76,7 @@ nlohmann::json moveitBranch(const relpos::Problem& pb, const relpos::Branch& b, 
       {"constraint_region",
        {{"primitives",
          {{{"type", 1},  // shape_msgs/SolidPrimitive BOX
-           {"dimensions",
-            {g.box_dimensions.x(), g.box_dimensions.y(), g.box_dimensions.z()}}}}},
+           {"dimensions", {g.box_dimensions.x(), g.box_dimensions.y(), g.box_dimensions.z()}}}}},
         {"primitive_poses",
          {{{"position", vec(g.box_pose.translation())},
            {"orientation", quat(Eigen::Quaterniond(g.box_pose.linear()))}}}},

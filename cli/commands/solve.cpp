@@ -1,6 +1,5 @@
 // relpos solve (docs/spec.md §3): one spec, its result document indented.
 #include <iostream>
-#include <memory>
 #include <string>
 
 #include "cli.hpp"
@@ -21,22 +20,7 @@ int cmdSolve(const Args& a, const Registry& reg) {
   relpos::Solution sol;
   relpos::solve(pb, reg, relpos::SolverOptions(), ws, sol);
   relpos::Report report;
-  if (a.collision) {
-    relpos::collision::MeshCache cache;
-    std::unique_ptr<relpos::collision::Scene> scene;
-    try {
-      scene = loadScene(a.positional[0], pb, cache);
-    } catch (const std::exception& e) {
-      // Reading the meshes threw: an answer, as when the filter throws (evaluate).
-      relpos::evaluate(pb, relpos::unhandledAfterThrow(sol, "filtering collisions", e.what()),
-                       a.result, report);
-      report.collision_checked = true;
-    }
-    if (!scene && !report.collision_checked) return kExitInvalid;
-    if (scene) relpos::evaluate(pb, sol, a.result, report, scene.get());
-  } else {
-    relpos::evaluate(pb, sol, a.result, report);
-  }
+  if (!reportOf(a.positional[0], pb, sol, a.result, a.collision, &report)) return kExitInvalid;
   std::string text;
   relpos::ResultFormat format = relpos::kResultDocument;
   format.degrees = a.degrees;

@@ -1,7 +1,6 @@
 // relpos view (docs/spec.md §3.12): a spec's answer as one self-contained HTML page.
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 
 #include "cli.hpp"
@@ -28,14 +27,7 @@ int cmdView(const Args& a, const Registry& reg) {
   const double size = pb.lengthScale();
   if (!a.window_given) options.window = size > 0.0 ? size : 1.0;
   relpos::Report report;
-  if (a.collision) {
-    relpos::collision::MeshCache cache;
-    std::unique_ptr<relpos::collision::Scene> scene = loadScene(file, pb, cache);
-    if (!scene) return kExitInvalid;
-    relpos::evaluate(pb, sol, options, report, scene.get());
-  } else {
-    relpos::evaluate(pb, sol, options, report);
-  }
+  if (!reportOf(file, pb, sol, options, a.collision, &report)) return kExitInvalid;
   relpos::viewer::ViewOptions view;
   view.window = options.window;
   view.degrees = a.degrees;

@@ -244,18 +244,19 @@ std::string meshSizeMismatch(const ObjectSpec& o, double mesh_size, double probl
 
 }  // namespace
 
+std::string meshPath(const std::string& spec_dir, const std::string& mesh) {
+  return mesh.empty() || mesh[0] == '/' || spec_dir.empty() ? mesh : spec_dir + "/" + mesh;
+}
+
 std::unique_ptr<Scene> buildScene(const Problem& problem, const std::string& spec_dir,
                                   MeshCache& cache, std::vector<Diagnostic>* errors,
                                   std::vector<Diagnostic>* warnings) {
-  auto resolve = [&](const std::string& mesh) {
-    return mesh.empty() || mesh[0] == '/' || spec_dir.empty() ? mesh : spec_dir + "/" + mesh;
-  };
   auto load = [&](const ObjectSpec& o, const std::string& json_path,
                   bool an_obstacle = false) -> ModelPtr {
     std::string error;
     std::vector<std::string> notes;
     double size = 0.0;
-    ModelPtr m = cache.get(resolve(o.mesh), o.mesh_scale, &error, &notes, &size);
+    ModelPtr m = cache.get(meshPath(spec_dir, o.mesh), o.mesh_scale, &error, &notes, &size);
     if (!m) errors->push_back({json_path, error + " ('" + o.mesh + "')"});
     for (const auto& n : notes) warnings->push_back({json_path, n + " ('" + o.mesh + "')"});
     if (m) {

@@ -303,11 +303,8 @@ py::list branchParameters(const BranchRef& b) {
 // by it) and the chain's links as numpy arrays.
 py::dict branchTsr(const BranchRef& b, double window) {
   if (!(window > 0.0) || !std::isfinite(window)) throw py::value_error("window must be > 0");
-  relpos::TsrExport e;
-  if (b.branch().exact)
-    e = relpos::tsrChainOf(b.solved->problem, b.branch(), b.report().nearest.parameters, window);
-  else
-    e.why = "a numeric branch (a certified chart of a piece of the set), not a closed form";
+  const relpos::TsrExport e =
+      relpos::tsrChainOf(b.solved->problem, b.branch(), b.report().nearest.parameters, window);
   py::dict d;
   d["exact"] = e.exact;
   d["why"] = e.exact ? py::object(py::none()) : py::object(py::str(e.why));

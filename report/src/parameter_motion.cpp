@@ -10,9 +10,6 @@
 namespace relpos {
 
 namespace detail {
-namespace {
-
-}  // namespace
 
 ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double span,
                              const Vector3d& origin, double scale) {
@@ -54,19 +51,22 @@ ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double 
   return mo;
 }
 
-ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step,
-                            double scale) {
+bool stepAround(const Manifold& m, const Params& at, int i, double step, Params* a, Params* b) {
   const Parameter p = m.parameter(i);
   double h = step * (1.0 + std::abs(at[i]));
   // Within a narrow range (a 1° angle range, a 10 mm one in metres): a quarter of it.
   if (!p.periodic && std::isfinite(p.max - p.min)) h = std::min(h, 0.25 * (p.max - p.min));
-  Params a = at, b = at;
-  a[i] = at[i] - h;
-  b[i] = at[i] + h;
-  if (!p.periodic) a[i] = std::max(a[i], p.min), b[i] = std::min(b[i], p.max);
-  const double span = b[i] - a[i];
-  if (!(span > 0.5 * h)) return ParameterMotion();  // a parameter pinned by its bounds
-  return screwBetween(m.pose(a), m.pose(b), span, m.pose(at).translation(), scale);
+  *a = at, *b = at;
+  (*a)[i] = at[i] - h;
+  (*b)[i] = at[i] + h;
+  if (!p.periodic) (*a)[i] = std::max((*a)[i], p.min), (*b)[i] = std::min((*b)[i], p.max);
+  return (*b)[i] - (*a)[i] > 0.5 * h;
+}
+
+ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale) {
+  Params a, b;
+  if (!stepAround(m, at, i, step, &a, &b)) return ParameterMotion();  // pinned by its bounds
+  return screwBetween(m.pose(a), m.pose(b), b[i] - a[i], m.pose(at).translation(), scale);
 }
 
 namespace {

@@ -22,6 +22,11 @@ void parameterMotions(const Problem& problem, const Branch& branch, const Params
 ParameterMotion screwBetween(const Isometry3d& Xa, const Isometry3d& Xb, double span,
                              const Vector3d& origin, double scale);
 
+// Parameter i's two values about at[i] (in *a and *b, the others as at): ± step·(1 + |at[i]|), at
+// most a quarter of a bounded range, within the bounds. False when the bounds pin it (the two
+// less than half a step apart).
+bool stepAround(const Manifold& m, const Params& at, int i, double step, Params* a, Params* b);
+
 // The motion of parameter i of m about `at`, between the poses `step` (relative; at most a quarter
 // of a bounded range) to either side within its bounds: what the report writes (step 1e-4: the
 // instantaneous motion to about 1e-8), and exactly the parameter's screw whatever the step when

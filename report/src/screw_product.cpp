@@ -58,20 +58,33 @@ std::vector<Params> checkPoints(const Manifold& m, const Params& at, double wind
   return out;
 }
 
-// Whether the product in `order` is the branch at every check point, to rounding: 1e-9 of the
-// problem's size and 1e-9 rad (a wrong order or a parameter that is no fixed screw is off by
-// about the motion itself). `part`: both, or only the orientation (1) or the pivot's position (2).
+// Whether pose Y is X to rounding: 1e-9 of the problem's size and 1e-9 rad (a wrong order or a
+// parameter that is no fixed screw is off by about the motion itself). `part`: both, or only the
+// orientation (1) or the position of the point `pivot` of the object (2).
+static bool samePose(const Isometry3d& X, const Isometry3d& Y, const Vector3d& pivot, double scale,
+                     int part = 3) {
+  return !((part & 2) && !((X * pivot - Y * pivot).norm() <= 1e-9 * scale)) &&
+         !((part & 1) && !(rotationDistance(X.linear(), Y.linear()) <= 1e-9));
+}
+
+// Whether the product in `order` is the branch's `part` at every check point.
 static bool isTheBranch(const Manifold& m, const std::vector<ScrewFactor>& order, const Params& at,
                         const Isometry3d& X_at, const Vector3d& pivot,
                         const std::vector<Params>& points, double scale, int part) {
-  for (const Params& t : points) {
-    const Isometry3d X = m.pose(t), Y = product(order, t, at, X_at, pivot);
-    // The pivot's position and the orientation: together, the pose.
-    if (((part & 2) && !((X * pivot - Y * pivot).norm() <= 1e-9 * scale)) ||
-        ((part & 1) && !(rotationDistance(X.linear(), Y.linear()) <= 1e-9)))
-      return false;
-  }
+  for (const Params& t : points)
+    if (!samePose(m.pose(t), product(order, t, at, X_at, pivot), pivot, scale, part)) return false;
   return true;
+}
+
+// Factor f's bounds: the range of rate·(θ − θ*) over its parameter's box (lo ≤ hi); *windowed
+// set when an unbounded length was boxed to ± window.
+static void boundFactor(ScrewFactor& f, const Parameter& p, double at, double window,
+                        bool* windowed) {
+  double lo, hi;
+  boxOf(p, at, window, &lo, &hi);
+  if (!p.periodic && !(std::isfinite(p.min) && std::isfinite(p.max))) *windowed = true;
+  f.lo = f.rate * (lo - at), f.hi = f.rate * (hi - at);
+  if (f.lo > f.hi) std::swap(f.lo, f.hi);
 }
 
 // The first order of `factors` (all of them tried) whose product is the branch's `part`.
@@ -89,18 +102,6 @@ static std::optional<std::vector<ScrewFactor>> firstOrder(const Manifold& m,
     if (isTheBranch(m, order, at, X_at, pivot, points, scale, part)) return order;
   } while (std::next_permutation(perm.begin(), perm.end()));
   return std::nullopt;
-}
-
-// Parameter i's step about at: as motionAlong's (relative 0.05, within a quarter of a bounded
-// range and within the bounds); false when its bounds pin it.
-static bool stepAbout(const Manifold& m, const Params& at, int i, Params* a, Params* b) {
-  const Parameter p = m.parameter(i);
-  double h = 0.05 * (1.0 + std::abs(at[i]));
-  if (!p.periodic && std::isfinite(p.max - p.min)) h = std::min(h, 0.25 * (p.max - p.min));
-  *a = at, *b = at;
-  (*a)[i] = at[i] - h, (*b)[i] = at[i] + h;
-  if (!p.periodic) (*a)[i] = std::max((*a)[i], p.min), (*b)[i] = std::min((*b)[i], p.max);
-  return (*b)[i] - (*a)[i] > 0.5 * h;
 }
 
 Vector3d pivotOf(const Manifold& m, const Params& at, const Isometry3d& X_at, double scale) {
@@ -134,7 +135,7 @@ std::optional<std::vector<ScrewFactor>> separableProduct(const Manifold& m, cons
   std::vector<ScrewFactor> turns, moves;
   for (int i = 0; i < m.dof(); ++i) {
     Params ta, tb;
-    if (!stepAbout(m, at, i, &ta, &tb)) continue;
+    if (!stepAround(m, at, i, 0.05, &ta, &tb)) continue;  // motionAlong's wide step
     const double span = tb[i] - ta[i];
     const Isometry3d Xa = m.pose(ta), Xb = m.pose(tb);
     const Eigen::AngleAxisd turn(Matrix3d(Xb.linear() * Xa.linear().transpose()));
@@ -175,7 +176,6 @@ std::optional<std::vector<ScrewFactor>> separableProduct(const Manifold& m, cons
 
 }  // namespace detail
 
-using detail::boxOf;
 using detail::checkPoints;
 using detail::pivotOf;
 using detail::separableProduct;
@@ -222,11 +222,7 @@ std::optional<std::vector<ScrewFactor>> screwProduct(const Problem& problem, con
     f.point = mo.point;
     f.pitch = mo.type == ParameterMotion::Type::kScrew ? mo.pitch : 0.0;
     f.rate = mo.rate;
-    double lo, hi;
-    boxOf(p, at[i], window, &lo, &hi);
-    if (!p.periodic && !(std::isfinite(p.min) && std::isfinite(p.max))) *windowed = true;
-    f.lo = f.rate * (lo - at[i]);
-    f.hi = f.rate * (hi - at[i]);
+    detail::boundFactor(f, p, at[i], window, windowed);
     (f.turn ? turns : slides).push_back(f);
   }
   // Every order of the factors, slides first in the first ones tried (they commute with one
@@ -260,14 +256,9 @@ std::optional<std::vector<ScrewFactor>> rigidProduct(const Problem& problem, con
   // Rigid, with its bounds: a turn about `through` (or a slide) over the parameter's box.
   bool open = false;
   auto rigid = [&](ScrewFactor f, const Vector3d& through) {
-    const Parameter p = m.parameter(f.param);
-    double lo, hi;
-    boxOf(p, at[f.param], window, &lo, &hi);
-    open = open || (!p.periodic && !(std::isfinite(p.min) && std::isfinite(p.max)));
     f.orients = f.moves = true;
     if (f.turn) f.point = through;
-    f.lo = f.rate * (lo - at[f.param]), f.hi = f.rate * (hi - at[f.param]);
-    if (f.lo > f.hi) std::swap(f.lo, f.hi);
+    detail::boundFactor(f, m.parameter(f.param), at[f.param], window, &open);
     return f;
   };
   // The pivot slides, or turns about one axis first (a fingertip around a can); the orientation
@@ -314,10 +305,7 @@ std::optional<std::vector<ScrewFactor>> rigidProduct(const Problem& problem, con
       if (carried && k == moves.size()) x -= carried_angle;
       X = X * exponential(f, x);
     }
-    X = X * X_at;
-    const Isometry3d Y = m.pose(t);
-    if (!((X.translation() - Y.translation()).norm() <= 1e-9 * scale) ||
-        !(rotationDistance(X.linear(), Y.linear()) <= 1e-9)) {
+    if (!detail::samePose(m.pose(t), X * X_at, Vector3d::Zero(), scale)) {
       *why = "the branch's separable product is no chain of rigid turns and slides";
       return std::nullopt;
     }

@@ -2,13 +2,12 @@
 // X(θ) = Π_k exp(ξ_k (θ_k − θ*_k)) · X(θ*), checked on the branch pose by pose (rigidProduct,
 // relpos/report/pose_model.hpp), each factor written as a link (or several as one, when they fit
 // one TSR's frame).
-#include "relpos/report/tsr.hpp"
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 #include "relpos/report/pose_model.hpp"
+#include "relpos/report/tsr.hpp"
 
 namespace relpos {
 namespace {
@@ -117,6 +116,10 @@ Isometry3d tsrChainPose(const std::vector<TsrLink>& chain,
 TsrExport tsrChainOf(const Problem& problem, const Branch& branch, const Params& at,
                      double window) {
   TsrExport out;
+  if (!branch.exact) {
+    out.why = "a numeric branch (a certified chart of a piece of the set), not a closed form";
+    return out;
+  }
   auto order = rigidProduct(problem, branch, at, window, &out.why, &out.windowed);
   if (!order) return out;
   const Isometry3d X_at = branch.manifold->pose(at);

@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "relpos/collision/mesh.hpp"
+#include "relpos/collision/scene.hpp"
 #include "relpos/report/pose_model.hpp"
 
 namespace relpos::viewer::detail {
@@ -41,7 +42,7 @@ bool meshJson(const ObjectSpec& o, const std::string& json_path, const std::stri
               std::vector<Diagnostic>* warnings) {
   *out = nullptr;
   if (o.mesh.empty()) return true;
-  const std::string path = o.mesh[0] == '/' || spec_dir.empty() ? o.mesh : spec_dir + "/" + o.mesh;
+  const std::string path = collision::meshPath(spec_dir, o.mesh);
   collision::Mesh mesh;
   std::string error;
   std::vector<std::string> notes;

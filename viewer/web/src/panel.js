@@ -9,8 +9,11 @@ function element(tag, attributes = {}, text = '') {
   return e;
 }
 
+// Four significant digits, trailing zeros of the fraction dropped (1000 stays 1000).
 function fmt(x) {
-  return Number.isFinite(x) ? (Math.abs(x) < 5e-13 ? 0 : x).toPrecision(4).replace(/\.?0+(e|$)/, '$1') : String(x);
+  if (!Number.isFinite(x)) return String(x);
+  const s = (Math.abs(x) < 5e-13 ? 0 : x).toPrecision(4);
+  return s.includes('.') ? s.replace(/\.?0+(e|$)/, '$1') : s;
 }
 
 // Components a millionth of the largest are shown as 0: a direction's rounding, not its meaning.

@@ -72,6 +72,10 @@ class Scene {
   std::vector<SceneObject> others_;
 };
 
+// The file of an object's `mesh`: as written when absolute (or when there is no spec folder),
+// else relative to the spec's folder.
+std::string meshPath(const std::string& spec_dir, const std::string& mesh);
+
 // The scene of a problem: mesh paths relative to spec_dir. The mobile object needs a mesh; the
 // fixed object and the obstacles without one are left out, and so are the allowed contacts. Errors and warnings carry the JSON
 // path ("mobile.mesh", "obstacles[1].mesh").

@@ -33,8 +33,8 @@ struct TsrExport {
   bool windowed = false;
 };
 
-// The chain of `branch` about parameters `at` (the branch's nearest pose's). `window`: the
-// half-width given to unbounded lengths (> 0).
+// The chain of `branch` about parameters `at` (the branch's nearest pose's); none for a numeric
+// branch (a chart is no closed form). `window`: the half-width given to unbounded lengths (> 0).
 TsrExport tsrChainOf(const Problem& problem, const Branch& branch, const Params& at,
                      double window);
 
