@@ -128,7 +128,7 @@ json branchJson(const Problem& problem, const Branch& branch, const Report& repo
     const Parameter& p = br.parameters[static_cast<std::size_t>(k)];
     const ParameterMotion& mo = br.motions[static_cast<std::size_t>(k)];
     json pj = {{"name", p.name},
-               {"kind", p.kind == ParamKind::kAngle ? "angle" : "length"},
+               {"kind", toString(p.kind)},
                {"periodic", p.periodic},
                {"motion", motionJson(mo)},
                {"constraint", mo.constraint}};
