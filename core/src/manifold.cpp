@@ -5,6 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "kink_certificate.hpp"
+#include "nearest_eval.hpp"
+
 namespace relpos {
 
 double poseDistance(const Isometry3d& a, const Isometry3d& b) {
@@ -19,15 +22,8 @@ bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
 }
 
 namespace {
-double clampParam(const Parameter& p, double v) {
-  if (p.periodic) return v;
-  return std::min(std::max(v, p.min), p.max);
-}
-
-// The pose distance at t once its closed-form parameters are set (written into t).
-double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form, Params* t) {
-  return poseDistance(closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t), X);
-}
+using detail::clampParam;
+using detail::distanceWithTail;
 
 // Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
 // deterministic, derivative free, monotone. A sweep tries ± step along each parameter; after a
@@ -236,7 +232,28 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   double last_step = 0.0;
   best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged, &last_step);
   if (last_step > 0.0) best_step = std::min(best_step, 4 * last_step);
-  if (!converged) best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
+  // At a kink of the metric (the rotation or the translation distance zero) differences across it
+  // make a curvature of about 1/h, and Newton's steps, that short, look converged where one side
+  // still descends. There, a certificate that the point is a minimum ends the search (the rotation
+  // already right), else the pattern search goes on from a step that can leave the kink.
+  // Near: the rotation within 1e-4 rad of X's, or the translation 1e-4 of the distance.
+  auto nearKink = [&](const Params& t, bool* rotation_right) {
+    Params at = t;
+    const Isometry3d Y = detail::poseWithClosedForms(m, X, fixed, &at);
+    *rotation_right = rotationDistance(Y.linear(), X.linear()) < 1e-4;
+    return *rotation_right || (Y.translation() - X.translation()).norm() < 1e-4 * best_d;
+  };
+  bool rotation_right = false;
+  const bool kink = nearKink(best, &rotation_right);
+  const bool settled =
+      kink ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
+  if (!settled) {
+    if (kink) best_step = std::max(best_step, 1e-2);
+    best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
+    // A search that ended beside the kink (to its last step, 1e-8) is moved onto it.
+    if (nearKink(best, &rotation_right) && rotation_right)
+      detail::settleOnRotationKink(m, X, par, &best, &best_d);
+  }
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;

@@ -23,6 +23,9 @@ Matrix3d RotationPart::baseRotation() const {
 const Vector3d* RotationPart::spinAxis() const {
   return std::visit([](const auto& s) { return s.spinAxis(); }, shape);
 }
+int RotationPart::spinIndex() const {
+  return std::visit([](const auto& s) { return s.spinIndex(); }, shape);
+}
 Matrix3d RotationPart::spinBase(const double* theta) const {
   return std::visit([theta](const auto& s) { return s.spinBase(theta); }, shape);
 }

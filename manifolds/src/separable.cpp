@@ -7,8 +7,10 @@ SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPar
   if (!trans_.projectsExactly()) return;
   closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
   const Vector3d* spin_axis = rot_.spinAxis();
-  spin_closed_ = spin_axis && trans_.invariantUnderSpin(*spin_axis);
-  if (spin_closed_) closed_form_ |= 1u << 1;  // θ: the second rotation parameter of every spin
+  if (spin_axis && trans_.invariantUnderSpin(*spin_axis)) {
+    spin_index_ = rot_.spinIndex();
+    closed_form_ |= 1u << spin_index_;
+  }
 }
 
 Parameter SeparableManifold::parameter(int i) const {
@@ -34,12 +36,20 @@ Params SeparableManifold::project(const Isometry3d& X) const {
 
 Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) const {
   Isometry3d Y = Isometry3d::Identity();
-  if (spin_closed_) {
-    // R = P R(u_m, θ) with P the rotation at θ = 0.
+  if (spin_index_ >= 0) {
+    // R = P R(u_m, θ) with P the rotation at θ = 0. The angle between R and X's rotation falls
+    // as tr(Xᵀ P R(u_m, θ)) = a + r cos(θ − θ*) rises: θ*, or on an arc the end nearer to θ*.
     Params& t = *theta;
     const Matrix3d P = rot_.spinBase(t.data());
+    const Vector3d& u = *rot_.spinAxis();
     Matrix3d spin;
-    t[1] = bestSpinAbout(*rot_.spinAxis(), X.linear().transpose() * P, &spin);
+    double& s = t[spin_index_];
+    s = bestSpinAbout(u, X.linear().transpose() * P, &spin);
+    const Parameter arc = rot_.parameter(spin_index_);
+    if (!arc.periodic && arc.max - arc.min < 2 * kPi) {
+      const double on_arc = rotation::ontoArc(s, arc.min, arc.max);
+      if (on_arc != s) spin = axisAngle(u, s = on_arc);
+    }
     Y.linear() = P * spin;
   } else {
     Y.linear() = rot_.rotation(theta->data());

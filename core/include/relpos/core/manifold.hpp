@@ -153,7 +153,10 @@ double poseDistance(const Isometry3d& a, const Isometry3d& b);
 Params referenceParams(const Manifold& m);
 
 // The pose of manifold m nearest to X: m.project(X) refined by a deterministic pattern search on
-// poseDistance within the parameter bounds. Never worse than the projection.
+// poseDistance within the parameter bounds, and Newton steps; the parameters with a closed form
+// (closedFormParams) are set, not searched, and where the rotation is already right (a kink of
+// the metric) a first-order certificate of the minimum ends the search. Never worse than the
+// projection.
 Params nearestParams(const Manifold& m, const Isometry3d& X);
 
 }  // namespace relpos

@@ -26,6 +26,7 @@ struct RotationPart {
   // See rotation::ShapeBase.
   Matrix3d baseRotation() const;
   const Vector3d* spinAxis() const;
+  int spinIndex() const;
   Matrix3d spinBase(const double* theta) const;
 
   template <typename Shape>

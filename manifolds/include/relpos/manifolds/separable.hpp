@@ -20,9 +20,9 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   Isometry3d pose(const Params& theta) const override;
   Params project(const Isometry3d& X) const override;
   // The translation parameters, when its projection is exact; and then also the spin θ about
-  // the mobile axis u_m of a rotation with a spin (R = … R(u_m, θ): one angle, an angle range)
-  // when the translation set does not move with it: θ only turns the rotation, and the nearest spin
-  // is closed form.
+  // the mobile axis u_m of a rotation with a spin (R = … R(u_m, θ): one parallel, one angle, an
+  // angle range) when the translation set does not move with it: θ only turns the rotation, and
+  // the nearest spin is closed form (on its arc, when it has one).
   unsigned closedFormParams() const override { return closed_form_; }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
@@ -37,7 +37,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   TranslationPart trans_;
   int dof_ = 0;  // kept: a translation part of planes counts its rows to know it
   unsigned closed_form_ = 0u;
-  bool spin_closed_ = false;  // bit 1 of closed_form_: the spin θ (RotationPart::spinAxis)
+  int spin_index_ = -1;  // the spin θ (RotationPart::spinAxis) when closed form, else −1
 };
 // Stored inline in a Branch (ManifoldHolder): the largest shapes of the two variants together.
 static_assert(sizeof(SeparableManifold) <= kManifoldStorage, "separable manifold too large");

@@ -20,6 +20,13 @@ struct OneParallel : ShapeBase<OneParallel> {
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
   Matrix3d baseRotation() const { return R0; }
+  // R(u_f, φ) R0 = R0 R(u_m, φ) (R0 u_m = u_f): a spin about u_m, its only parameter.
+  const Vector3d* spinAxis() const { return &u_m; }
+  int spinIndex() const { return 0; }
+  Matrix3d spinBase(const double* theta) const {
+    (void)theta;
+    return R0;
+  }
 };
 
 // φ moved onto the arc [lo, hi] (hi − lo < 2π): itself when on it (modulo 2π), else the end

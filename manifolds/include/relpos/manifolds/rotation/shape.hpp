@@ -19,9 +19,11 @@ struct ShapeBase {
   // The rotation a matcher checks what holds for every rotation of the shape at (relative
   // orientations it does not change): the formulas' base rotation R0, or the identity.
   Matrix3d baseRotation() const { return Matrix3d::Identity(); }
-  // The mobile axis u_m of a trailing spin R = spinBase(θ) R(u_m, θ[1]), or null: the nearest
-  // spin is then closed form when the translation does not move with it.
+  // The mobile axis u_m of a trailing spin R = spinBase(θ) R(u_m, θ[spinIndex()]), or null: the
+  // nearest spin is then closed form when the translation does not move with it. The spin is the
+  // second parameter (after the turn that sets u_m's direction), or the only one.
   const Vector3d* spinAxis() const { return nullptr; }
+  int spinIndex() const { return 1; }
   Matrix3d spinBase(const double* theta) const {
     (void)theta;
     return Matrix3d::Identity();

@@ -1,0 +1,21 @@
+#pragma once
+// The nearest pose at a kink of the metric: where the rotation is already right and only the
+// position differs, the distance ‖Δt‖ + angle has no gradient, a Newton step on it does not
+// converge, and a pattern search spends dozens of poses confirming the point (issue 18).
+#include "relpos/core/manifold.hpp"
+
+namespace relpos::detail {
+
+// From *best (its distance *best_d), Gauss–Newton steps on the rotation's residual alone, each
+// taken only when it lowers the distance, to the point where the rotation equals X's; there, true
+// when that point is a strict local minimum of the distance: with J_r and J_t the rotation's and
+// the translation's residual Jacobians in the searched parameters (central differences), J_r of
+// full column rank and g = J_tᵀ Δt/‖Δt‖, the distance grows in every direction by at least
+// (1 − √(gᵀ (J_rᵀJ_r)⁻¹ g)) ‖J_r δ‖ to first order, so gᵀ (J_rᵀJ_r)⁻¹ g < 1 proves it; every
+// probe of the differences is checked not to be nearer as well. False (the search goes on from
+// *best, never farther than before) for more than three searched parameters, a rotation that
+// cannot be reached, or a point the translation pulls away from.
+bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Parameter* par,
+                          Params* best, double* best_d);
+
+}  // namespace relpos::detail

@@ -1,0 +1,27 @@
+#pragma once
+// The one evaluation the nearest-pose search makes (manifold.cpp, kink_certificate.cpp): the pose
+// at θ once its closed-form parameters are set, and its distance to X.
+#include "relpos/core/manifold.hpp"
+
+namespace relpos::detail {
+
+// pose(θ), with the parameters of m.closedFormParams() (`closed_form`) first set in θ to the
+// values nearest X.
+inline Isometry3d poseWithClosedForms(const Manifold& m, const Isometry3d& X, unsigned closed_form,
+                                      Params* t) {
+  return closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t);
+}
+
+// The pose distance at θ once its closed-form parameters are set (written into θ).
+inline double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form,
+                               Params* t) {
+  return poseDistance(poseWithClosedForms(m, X, closed_form, t), X);
+}
+
+// θ_i kept within its bounds (a periodic one wraps instead).
+inline double clampParam(const Parameter& p, double v) {
+  if (p.periodic) return v;
+  return v < p.min ? p.min : (v > p.max ? p.max : v);
+}
+
+}  // namespace relpos::detail
