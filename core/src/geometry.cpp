@@ -73,13 +73,26 @@ double angleBetween(const Vector3d& a, const Vector3d& b) {
   return std::atan2(accurateCross(a, b).norm(), a.dot(b));
 }
 
-double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
-  // The angle of D = aᵀb from its trace (cos) and its skew part (sin): atan2 keeps full precision
-  // near 0 and π, without the quaternion and axis Eigen::AngleAxisd would also compute.
+namespace {
+// The angle of D = aᵀb from its trace (cos) and its skew part (*sin_axis, sin times the axis):
+// atan2 keeps full precision near 0 and π, without the quaternion and axis Eigen::AngleAxisd
+// would also compute.
+double angleOf(const Matrix3d& a, const Matrix3d& b, Vector3d* sin_axis) {
   const Matrix3d D = a.transpose() * b;
-  const double c = 0.5 * (D.trace() - 1.0);
-  const double s = 0.5 * Vector3d(D(2, 1) - D(1, 2), D(0, 2) - D(2, 0), D(1, 0) - D(0, 1)).norm();
-  return std::atan2(s, c);
+  *sin_axis = 0.5 * Vector3d(D(2, 1) - D(1, 2), D(0, 2) - D(2, 0), D(1, 0) - D(0, 1));
+  return std::atan2(sin_axis->norm(), 0.5 * (D.trace() - 1.0));
+}
+}  // namespace
+
+double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
+  Vector3d sin_axis;
+  return angleOf(a, b, &sin_axis);
+}
+
+Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b) {
+  Vector3d sin_axis;
+  const double angle = angleOf(a, b, &sin_axis), s = sin_axis.norm();
+  return s > 0.0 ? Vector3d(sin_axis * (angle / s)) : Vector3d::Zero();
 }
 
 namespace {

@@ -21,14 +21,8 @@ struct Residuals {
 
 Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned fixed, Params* t) {
   const Isometry3d Y = poseWithClosedForms(m, X, fixed, t);
-  const Matrix3d D = X.linear().transpose() * Y.linear();
-  const Vector3d s = 0.5 * Vector3d(D(2, 1) - D(1, 2), D(0, 2) - D(2, 0), D(1, 0) - D(0, 1));
-  const double sn = s.norm(), angle = std::atan2(sn, 0.5 * (D.trace() - 1.0));
-  Residuals out;
-  out.t = Y.translation() - X.translation();
-  out.r = sn > 0.0 ? Vector3d(s * (angle / sn)) : Vector3d::Zero();
-  out.d = poseDistance(Y, X);
-  return out;
+  return {Y.translation() - X.translation(), rotationVector(X.linear(), Y.linear()),
+          poseDistance(Y, X)};
 }
 
 }  // namespace
@@ -36,9 +30,8 @@ Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned fixed, Pa
 bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Parameter* par,
                           Params* best, double* best_d) {
   const unsigned fixed = m.closedFormParams();
-  int idx[kMaxDof], k = 0;
-  for (int i = 0; i < m.dof(); ++i)
-    if (!(fixed & (1u << i))) idx[k++] = i;
+  int idx[kMaxDof];
+  const int k = searchedParams(m, idx);
   if (k == 0 || k > kMaxSearched) return false;
   Jacobian Jr(3, k), Jt(3, k);
   for (int iter = 0; iter < 8; ++iter) {

@@ -88,9 +88,8 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
   *converged = false;
   *last_step = 0.0;
   const unsigned fixed = m.closedFormParams();
-  int idx[kMaxDof], k = 0;
-  for (int i = 0; i < m.dof(); ++i)
-    if (!(fixed & (1u << i))) idx[k++] = i;
+  int idx[kMaxDof];
+  const int k = detail::searchedParams(m, idx);
   if (k == 0) return best;
   auto eval = [&](Params t) { return distanceWithTail(m, X, fixed, &t); };
   for (int iter = 0; iter < 8; ++iter) {
@@ -237,22 +236,22 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // still descends. There, a certificate that the point is a minimum ends the search (the rotation
   // already right), else the pattern search goes on from a step that can leave the kink.
   // Near: the rotation within 1e-4 rad of X's, or the translation 1e-4 of the distance.
-  auto nearKink = [&](const Params& t, bool* rotation_right) {
+  enum class Kink { kNone, kRotation, kTranslation };
+  auto kinkAt = [&](const Params& t) {
     Params at = t;
     const Isometry3d Y = detail::poseWithClosedForms(m, X, fixed, &at);
-    *rotation_right = rotationDistance(Y.linear(), X.linear()) < 1e-4;
-    return *rotation_right || (Y.translation() - X.translation()).norm() < 1e-4 * best_d;
+    if (rotationDistance(Y.linear(), X.linear()) < 1e-4) return Kink::kRotation;
+    return (Y.translation() - X.translation()).norm() < 1e-4 * best_d ? Kink::kTranslation
+                                                                      : Kink::kNone;
   };
-  bool rotation_right = false;
-  const bool kink = nearKink(best, &rotation_right);
+  const Kink kink = kinkAt(best);
   const bool settled =
-      kink ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
+      kink != Kink::kNone ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
   if (!settled) {
-    if (kink) best_step = std::max(best_step, 1e-2);
+    if (kink != Kink::kNone) best_step = std::max(best_step, 1e-2);
     best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
     // A search that ended beside the kink (to its last step, 1e-8) is moved onto it.
-    if (nearKink(best, &rotation_right) && rotation_right)
-      detail::settleOnRotationKink(m, X, par, &best, &best_d);
+    if (kinkAt(best) == Kink::kRotation) detail::settleOnRotationKink(m, X, par, &best, &best_d);
   }
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);

@@ -18,6 +18,15 @@ inline double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned 
   return poseDistance(poseWithClosedForms(m, X, closed_form, t), X);
 }
 
+// The parameters the search moves (those without a closed form), their indices into idx; how many.
+inline int searchedParams(const Manifold& m, int* idx) {
+  const unsigned closed_form = m.closedFormParams();
+  int k = 0;
+  for (int i = 0; i < m.dof(); ++i)
+    if (!(closed_form & (1u << i))) idx[k++] = i;
+  return k;
+}
+
 // θ_i kept within its bounds (a periodic one wraps instead).
 inline double clampParam(const Parameter& p, double v) {
   if (p.periodic) return v;

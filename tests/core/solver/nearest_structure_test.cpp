@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kink_certificate.hpp"
@@ -63,10 +64,33 @@ std::vector<Problem> randomProblems() {
   return v;
 }
 
-std::vector<Problem> allProblems() {
-  std::vector<Problem> v = bundledProblems(), r = randomProblems();
-  v.insert(v.end(), r.begin(), r.end());
-  return v;
+// Every problem with its solution, solved once for the suite.
+const std::vector<std::pair<Problem, Solution>>& solvedProblems() {
+  static const std::vector<std::pair<Problem, Solution>> solved = [] {
+    std::vector<Problem> v = bundledProblems(), r = randomProblems();
+    v.insert(v.end(), r.begin(), r.end());
+    std::vector<std::pair<Problem, Solution>> out;
+    for (const Problem& p : v) out.emplace_back(p, solve(p, builtinRegistry()));
+    return out;
+  }();
+  return solved;
+}
+
+// fn(problem, branch) for every branch of every problem, until an assertion in fn fails.
+template <typename Fn>
+void forEachBranch(Fn fn) {
+  for (const auto& [p, s] : solvedProblems())
+    for (const Branch& b : s.branches) {
+      fn(p, b);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+}
+
+// settleOnRotationKink with the manifold's own parameters.
+bool settle(const Manifold& m, const Isometry3d& X, Params* best, double* best_d) {
+  Parameter par[kMaxDof];
+  for (int i = 0; i < m.dof(); ++i) par[i] = m.parameter(i);
+  return detail::settleOnRotationKink(m, X, par, best, best_d);
 }
 
 bool allClosedForm(const Manifold& m) {
@@ -76,22 +100,19 @@ bool allClosedForm(const Manifold& m) {
 TEST(NearestStructure, AllClosedFormBranchesAreGloballyNearest) {
   std::mt19937_64 rng(181);
   int branches = 0, spins = 0;
-  for (const Problem& p : allProblems()) {
-    const Solution s = solve(p, builtinRegistry());
-    for (const Branch& b : s.branches) {
-      const Manifold& m = *b.manifold;
-      if (!allClosedForm(m)) continue;
-      ++branches;
-      spins += m.rotationalDof() > 0;
-      const NearestPose n = nearestOnBranch(b, p.mobile.pose);
-      // Over the whole domain (an unbounded length within ±10 of the nearest pose's).
-      for (int k = 0; k < 2000; ++k) {
-        const Params t = sampleParameters(m, n.parameters, 10.0, rng);
-        ASSERT_GE(poseDistance(m.pose(t), p.mobile.pose), n.distance - 1e-9)
-            << p.name << " " << m.describe();
-      }
+  forEachBranch([&](const Problem& p, const Branch& b) {
+    const Manifold& m = *b.manifold;
+    if (!allClosedForm(m)) return;
+    ++branches;
+    spins += m.rotationalDof() > 0;
+    const NearestPose n = nearestOnBranch(b, p.mobile.pose);
+    // Over the whole domain (an unbounded length within ±10 of the nearest pose's).
+    for (int k = 0; k < 2000; ++k) {
+      const Params t = sampleParameters(m, n.parameters, 10.0, rng);
+      ASSERT_GE(poseDistance(m.pose(t), p.mobile.pose), n.distance - 1e-9)
+          << p.name << " " << m.describe();
     }
-  }
+  });
   EXPECT_GT(branches, 40);
   EXPECT_GT(spins, 10);  // branches whose rotation is set in closed form too
 }
@@ -99,41 +120,36 @@ TEST(NearestStructure, AllClosedFormBranchesAreGloballyNearest) {
 TEST(NearestStructure, APoseMovedOffTheBranchComesBackNoFartherThanTheMove) {
   std::mt19937_64 rng(182);
   int branches = 0, certified = 0;
-  for (const Problem& p : allProblems()) {
-    const Solution s = solve(p, builtinRegistry());
-    for (const Branch& b : s.branches) {
-      const Manifold& m = *b.manifold;
-      // Exact branches: a certified piece of a numeric set (a chart) is not searched this way
-      // yet (issue 18's closing note).
-      if (m.dof() == 0 || !b.exact) continue;
-      for (int k = 0; k < 3; ++k) {
-        const Isometry3d Y = m.pose(sampleParameters(m, referenceParams(m), 1.0, rng));
-        Isometry3d X = Y;
-        const double move = std::pow(10.0, -1.0 - k);  // 10 cm, 1 cm, 1 mm
-        X.translation() += move * Vector3d(std::normal_distribution<double>()(rng),
-                                           std::normal_distribution<double>()(rng),
-                                           std::normal_distribution<double>()(rng))
-                                      .normalized();
-        const Params t = nearestParams(m, X);
-        const double d = poseDistance(m.pose(t), X);
-        ASSERT_LE(d, move + 1e-9) << p.name << " " << m.describe();
-        for (int j = 0; j < 200; ++j) {
-          const Params u = sampleParameters(m, t, 0.05, rng);
-          ASSERT_GE(poseDistance(m.pose(u), X), d - 1e-9) << p.name << " " << m.describe();
-        }
-        // Where the answer is a certified kink, settling again finds the same point.
-        Params again = t;
-        double again_d = d;
-        Parameter par[kMaxDof];
-        for (int i = 0; i < m.dof(); ++i) par[i] = m.parameter(i);
-        if (detail::settleOnRotationKink(m, X, par, &again, &again_d)) {
-          ++certified;
-          EXPECT_NEAR(again_d, d, 1e-12) << p.name << " " << m.describe();
-        }
-        ++branches;
+  forEachBranch([&](const Problem& p, const Branch& b) {
+    const Manifold& m = *b.manifold;
+    // Exact branches: a certified piece of a numeric set (a chart) is not searched this way
+    // yet (issue 18's closing note).
+    if (m.dof() == 0 || !b.exact) return;
+    for (int k = 0; k < 3; ++k) {
+      const Isometry3d Y = m.pose(sampleParameters(m, referenceParams(m), 1.0, rng));
+      Isometry3d X = Y;
+      const double move = std::pow(10.0, -1.0 - k);  // 10 cm, 1 cm, 1 mm
+      X.translation() += move * Vector3d(std::normal_distribution<double>()(rng),
+                                         std::normal_distribution<double>()(rng),
+                                         std::normal_distribution<double>()(rng))
+                                    .normalized();
+      const Params t = nearestParams(m, X);
+      const double d = poseDistance(m.pose(t), X);
+      ASSERT_LE(d, move + 1e-9) << p.name << " " << m.describe();
+      for (int j = 0; j < 200; ++j) {
+        const Params u = sampleParameters(m, t, 0.05, rng);
+        ASSERT_GE(poseDistance(m.pose(u), X), d - 1e-9) << p.name << " " << m.describe();
       }
+      // Where the answer is a certified kink, settling again finds the same point.
+      Params again = t;
+      double again_d = d;
+      if (settle(m, X, &again, &again_d)) {
+        ++certified;
+        EXPECT_NEAR(again_d, d, 1e-12) << p.name << " " << m.describe();
+      }
+      ++branches;
     }
-  }
+  });
   EXPECT_GT(branches, 300);
   EXPECT_GT(certified, 30);  // the certificate is what ends these searches
 }
@@ -141,32 +157,24 @@ TEST(NearestStructure, APoseMovedOffTheBranchComesBackNoFartherThanTheMove) {
 TEST(NearestStructure, NoCertificateAwayFromTheKink) {
   // The rotation of X turned half a radian off every rotation of a 1-DOF spin branch: the
   // rotation distance cannot vanish, there is no kink to certify.
-  const std::vector<Problem> problems = bundledProblems();
   int tried = 0;
-  for (const Problem& p : problems) {
-    const Solution s = solve(p, builtinRegistry());
-    for (const Branch& b : s.branches) {
-      const Manifold& m = *b.manifold;
-      if (m.dof() == 0 || m.rotationalDof() != 1 || allClosedForm(m)) continue;
-      Params t = referenceParams(m);
-      Isometry3d X = m.pose(t);
-      // Turned about a direction no spin axis of the branch can follow (two tries: one is not
-      // the spin axis).
-      for (const Vector3d axis : {Vector3d::UnitX(), Vector3d::UnitY()}) {
-        Isometry3d Z = X;
-        Z.linear() = axisAngle(axis, 0.6) * X.linear();
-        const Params proj = m.project(Z);
-        if (rotationDistance(m.pose(proj).linear(), Z.linear()) < 0.1) continue;
-        Parameter par[kMaxDof];
-        for (int i = 0; i < m.dof(); ++i) par[i] = m.parameter(i);
-        Params best = nearestParams(m, Z);
-        double best_d = poseDistance(m.pose(best), Z);
-        EXPECT_FALSE(detail::settleOnRotationKink(m, Z, par, &best, &best_d)) << p.name;
-        ++tried;
-        break;
-      }
+  forEachBranch([&](const Problem& p, const Branch& b) {
+    const Manifold& m = *b.manifold;
+    if (m.dof() == 0 || m.rotationalDof() != 1 || allClosedForm(m)) return;
+    const Isometry3d X = m.pose(referenceParams(m));
+    // Turned about a direction no spin axis of the branch can follow (two tries: one is not
+    // the spin axis).
+    for (const Vector3d axis : {Vector3d::UnitX(), Vector3d::UnitY()}) {
+      Isometry3d Z = X;
+      Z.linear() = axisAngle(axis, 0.6) * X.linear();
+      if (rotationDistance(m.pose(m.project(Z)).linear(), Z.linear()) < 0.1) continue;
+      Params best = nearestParams(m, Z);
+      double best_d = poseDistance(m.pose(best), Z);
+      EXPECT_FALSE(settle(m, Z, &best, &best_d)) << p.name;
+      ++tried;
+      break;
     }
-  }
+  });
   EXPECT_GT(tried, 3);
 }
 

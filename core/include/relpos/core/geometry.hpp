@@ -49,6 +49,9 @@ double angleBetween(const Vector3d& a, const Vector3d& b);
 
 // Geodesic angle between two rotations.
 double rotationDistance(const Matrix3d& a, const Matrix3d& b);
+// The rotation taking a to b in a's frame as its axis times its angle (aᵀb = exp([v]×)): its norm
+// is rotationDistance(a, b); smooth where the angle is small (the nearest-pose search's residual).
+Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b);
 
 // The φ maximising trace(R(u, φ) M). With M = Xᵀ P (or Q Xᵀ P), the spin R = P R(u, φ) (or
 // P R(u, φ) Q) nearest the rotation X: the geodesic angle falls as the trace grows.
