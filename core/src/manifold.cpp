@@ -7,6 +7,7 @@
 
 #include "kink_certificate.hpp"
 #include "nearest_eval.hpp"
+#include "nearest_one_angle.hpp"
 
 namespace relpos {
 
@@ -24,6 +25,13 @@ bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
 namespace {
 using detail::clampParam;
 using detail::distanceWithTail;
+
+constexpr double kFine = 1e-8;  // the step at which the pattern search ends
+
+// The distance below which X lies on a manifold: the rounding of its coordinates.
+double roundingOf(const Isometry3d& X) {
+  return 64 * std::numeric_limits<double>::epsilon() * (1.0 + X.translation().norm());
+}
 
 // Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
 // deterministic, derivative free, monotone. A sweep tries ± step along each parameter; after a
@@ -154,47 +162,17 @@ Params newtonPolish(const Manifold& m, const Isometry3d& X, const Parameter* par
   return best;
 }
 
-}  // namespace
-
-Params referenceParams(const Manifold& m) {
-  Params t{};
-  for (int i = 0, n = m.dof(); i < n; ++i) {
-    const Parameter p = m.parameter(i);
-    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
-    t[i] = lo && hi ? 0.5 * (p.min + p.max) : (lo ? p.min : (hi ? p.max : 0.0));
-    if (std::isnan(p.min) || std::isnan(p.max)) t[i] = p.min + p.max;  // NaN: seen by the check
-  }
-  return t;
-}
-
-Params nearestParams(const Manifold& m, const Isometry3d& X) {
-  // The projection is exact for poses on the manifold and usually the right basin elsewhere; a
-  // coarse grid over the angle parameters catches the other basins of the combined metric
-  // (translation + rotation), and a pattern search refines the two best starts.
-  // Parameters with a closed form given the others (closedFormParams()) are not searched.
+// The general search: a coarse grid over (up to three of) the angles, the pattern search from the
+// projection and from the grid's best, Newton from the better. Returns whether Newton converged;
+// *step: the step a further pattern search starts from.
+bool searchFromProjection(const Manifold& m, const Isometry3d& X, const Parameter* par, Params proj,
+                          double proj_d, Params* best_out, double* best_d_out, double* step_out) {
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
-  Params proj = m.project(X);
-  double proj_d = distanceWithTail(m, X, fixed, &proj);
-  if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
-    proj = referenceParams(m);
-    proj_d = distanceWithTail(m, X, fixed, &proj);
-    if (std::isnan(proj_d)) return referenceParams(m);
-  }
-  // A pose on the manifold is its own projection, to the rounding of its coordinates: the search
-  // cannot improve on that, and in the combined metric (the translation of the mobile frame's
-  // origin) it may trade a rotation too small to see there for one that moves features far from
-  // that origin (a part frame 1e6 from its features).
-  const double rounding =
-      64 * std::numeric_limits<double>::epsilon() * (1.0 + X.translation().norm());
-  if (fixed == (1u << n) - 1u || proj_d <= rounding) return proj;
-  Parameter par[kMaxDof];
   int angles[kMaxDof], n_angles = 0;
-  for (int i = 0; i < n; ++i) {
-    par[i] = m.parameter(i);
+  for (int i = 0; i < n; ++i)
     if (par[i].kind == ParamKind::kAngle && n_angles < 3 && !(fixed & (1u << i)))
       angles[n_angles++] = i;
-  }
   constexpr int kGrid = 4;
   Params grid_best = proj;
   double grid_d = std::numeric_limits<double>::infinity();
@@ -219,7 +197,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // better one to the end: Newton, and the pattern search only where Newton did not converge,
   // from about its last step (a kink of the metric: a bound, or a zero translation or rotation
   // distance).
-  constexpr double kCoarse = 2e-1, kFine = 1e-8;
+  constexpr double kCoarse = 2e-1;
   double proj_step = 0.25, grid_step = 0.25;
   Params best = patternSearch(m, X, par, proj, &proj_d, &proj_step, kCoarse);
   double best_d = proj_d, best_step = proj_step;
@@ -231,6 +209,57 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   double last_step = 0.0;
   best = newtonPolish(m, X, par, best, &best_d, 1e-5, &converged, &last_step);
   if (last_step > 0.0) best_step = std::min(best_step, 4 * last_step);
+  *best_out = best;
+  *best_d_out = best_d;
+  *step_out = best_step;
+  return converged;
+}
+
+}  // namespace
+
+Params referenceParams(const Manifold& m) {
+  Params t{};
+  for (int i = 0, n = m.dof(); i < n; ++i) {
+    const Parameter p = m.parameter(i);
+    const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
+    t[i] = lo && hi ? 0.5 * (p.min + p.max) : (lo ? p.min : (hi ? p.max : 0.0));
+    if (std::isnan(p.min) || std::isnan(p.max)) t[i] = p.min + p.max;  // NaN: seen by the check
+  }
+  return t;
+}
+
+Params nearestParams(const Manifold& m, const Isometry3d& X) {
+  // The projection is exact for poses on the manifold and usually the right basin elsewhere;
+  // samples of the angle parameters catch the other basins of the combined metric (translation +
+  // rotation). Parameters with a closed form given the others (closedFormParams()) are not
+  // searched; one searched angle is a 1-D problem (nearest_one_angle.hpp), more the general
+  // search's.
+  const int n = m.dof();
+  const unsigned fixed = m.closedFormParams();
+  Params proj = m.project(X);
+  double proj_d = distanceWithTail(m, X, fixed, &proj);
+  if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
+    proj = referenceParams(m);
+    proj_d = distanceWithTail(m, X, fixed, &proj);
+    if (std::isnan(proj_d)) return referenceParams(m);
+  }
+  // A pose on the manifold is its own projection, to the rounding of its coordinates: the search
+  // cannot improve on that, and in the combined metric (the translation of the mobile frame's
+  // origin) it may trade a rotation too small to see there for one that moves features far from
+  // that origin (a part frame 1e6 from its features).
+  if (fixed == (1u << n) - 1u || proj_d <= roundingOf(X)) return proj;
+  Parameter par[kMaxDof];
+  for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
+  Params best;
+  double best_d, best_step;
+  bool converged;
+  int one;
+  if (detail::searchesOneBoundedAngle(m, par, &one)) {
+    best = proj, best_d = proj_d, best_step = 1e-2, converged = true;
+    detail::nearestAlongOneAngle(m, X, par[one], one, &best, &best_d);
+  } else {
+    converged = searchFromProjection(m, X, par, proj, proj_d, &best, &best_d, &best_step);
+  }
   // At a kink of the metric (the rotation or the translation distance zero) differences across it
   // make a curvature of about 1/h, and Newton's steps, that short, look converged where one side
   // still descends. There, a certificate that the point is a minimum ends the search (the rotation
@@ -256,6 +285,10 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;
+}
+
+bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
+  return m.closedFormParams() == (1u << m.dof()) - 1u || distance <= roundingOf(X);
 }
 
 }  // namespace relpos

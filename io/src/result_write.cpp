@@ -364,6 +364,8 @@ void writeBranch(Writer& w, const Report& r, std::size_t b, bool degrees) {
   });
   w.key("nearest");
   writeNearest(w, br.nearest, br.dof, u);
+  w.key("nearest_global");
+  w.boolean(br.nearest.global);
   if (br.sample_count > 0) {
     w.key("samples");
     const SamplePose* samples = r.samplesOf(b);

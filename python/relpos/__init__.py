@@ -146,7 +146,8 @@ class Branch:
 
     def nearest(self, pose):
         """The branch's pose nearest to ``pose`` (a 4x4 homogeneous matrix): a dict with
-        ``parameters``, ``pose`` (4x4) and ``distance`` (translation plus rotation angle)."""
+        ``parameters``, ``pose`` (4x4), ``distance`` (translation plus rotation angle) and
+        ``global`` (True where the pose is proven the nearest of the whole branch)."""
         import numpy as np
 
         return self._ref.nearest(np.asarray(pose, dtype=float))

@@ -257,6 +257,7 @@ py::dict branchNearest(const BranchRef& b, const Matrix4& M) {
   d["parameters"] = paramList(n.parameters, b.branch().manifold->dof());
   d["pose"] = toMatrix(n.pose);
   d["distance"] = n.distance;
+  d["global"] = n.global;
   return d;
 }
 

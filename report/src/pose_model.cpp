@@ -67,6 +67,9 @@ PoseModel poseModelOf(const Problem& problem, const Branch& branch, const Params
     for (int i = n - 1; i >= 0; --i) {
       const auto c = static_cast<std::size_t>(model.count[i]);
       t[i] = model.range[i][0] + static_cast<double>(rest % c) * model.step[i];
+      // θ*'s own node is θ* to the bit, not range + j·step an ulp off it: at a bound where the
+      // pose moves as √ of the distance to it (a two-angle branch's limit) an ulp moves it 1e-8.
+      if (std::abs(t[i] - at[i]) <= 1e-9 * model.step[i]) t[i] = at[i];
       rest /= c;
     }
     try {

@@ -201,12 +201,24 @@ class ResultReader {
           bad(at + "/nearest/distance", fmt(d) + ", the pose is " + fmt(again) + " away");
       }
     }
+    const bool global = b.contains("nearest_global") && b["nearest_global"].is_boolean() &&
+                        b["nearest_global"].get<bool>();
+    if (!b.contains("nearest_global") || !b["nearest_global"].is_boolean())
+      bad(at + "/nearest_global", "missing or not a boolean");
     if (expect_.samples > 0) {
       if (!b.contains("samples") || !b["samples"].is_array() ||
           b["samples"].size() != static_cast<std::size_t>(expect_.samples))
         return bad(at + "/samples", "missing or not as many as asked for"), d;
-      for (std::size_t k = 0; k < b["samples"].size(); ++k)
-        pose(b["samples"][k], at + "/samples/" + std::to_string(k), bounds);
+      for (std::size_t k = 0; k < b["samples"].size(); ++k) {
+        const auto S = pose(b["samples"][k], at + "/samples/" + std::to_string(k), bounds);
+        // A nearest pose said to be global: no pose of the branch is nearer, the samples neither.
+        if (!global || !S || d == none) continue;
+        const double ds = poseDistance(problem_.mobile.pose, *S);
+        const double slack = kRelativeTolerance * (1 + std::max(size_, S->translation().norm()));
+        if (ds < d - slack)
+          bad(at + "/samples/" + std::to_string(k),
+              fmt(ds) + " away, nearer than the global nearest pose's " + fmt(d));
+      }
     } else if (b.contains("samples")) {
       bad(at + "/samples", "present though none were asked for");
     }

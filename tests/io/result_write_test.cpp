@@ -151,6 +151,7 @@ void expectLine(const Problem& p, const ReportOptions& opt) {
     const NearestPose n = nearestOnBranch(s.branches[b], p.mobile.pose);
     expectPose(jb["nearest"], n.pose, n.parameters, m.dof(), what + " nearest");
     expectNumber(jb["nearest"]["distance"], n.distance, what + " distance");
+    EXPECT_EQ(jb["nearest_global"], n.global) << what;
     if (opt.samples > 0) {
       ASSERT_EQ(jb["samples"].size(), static_cast<std::size_t>(opt.samples)) << what;
       for (int k = 0; k < opt.samples; ++k) {

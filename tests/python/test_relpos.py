@@ -158,6 +158,9 @@ class BranchTest(unittest.TestCase):
                         self.assertLess(n["distance"], 1e-6)
                         np.testing.assert_allclose(n["pose"], X, atol=1e-6)
                         self.assertEqual(len(n["parameters"]), branch.dof)
+                        # On an exact branch the pose is its own projection: proven nearest.
+                        if branch.result["exact"]:
+                            self.assertTrue(n["global"])
 
     def test_the_nearest_pose_is_no_farther_than_any_sample(self):
         path = os.path.join(SOURCE, "data", "scenarios", "scenario-c-cylinder-grasp.json")

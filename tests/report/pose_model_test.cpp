@@ -70,10 +70,12 @@ void checkModels(const Problem& p, const std::string& what, Rng& rng, Count& n) 
       }
       EXPECT_EQ(model.table.size(), total) << what;
       EXPECT_LE(total, 512u) << what;
-      for (int k = 0; k < 40; ++k) {  // grid nodes
+      for (int k = 0; k < 40; ++k) {  // grid nodes, θ*'s own value exactly θ*
         Params t = near.parameters;
-        for (int i = 0; i < dof; ++i)
-          t[i] = model.range[i][0] + model.step[i] * rng.integer(0, model.count[i] - 1);
+        for (int i = 0; i < dof; ++i) {
+          const double v = model.range[i][0] + model.step[i] * rng.integer(0, model.count[i] - 1);
+          if (std::abs(v - near.parameters[i]) > 1e-9 * model.step[i]) t[i] = v;
+        }
         points.push_back(t);
       }
     }

@@ -152,11 +152,16 @@ double poseDistance(const Isometry3d& a, const Isometry3d& b);
 // projection is not.
 Params referenceParams(const Manifold& m);
 
-// The pose of manifold m nearest to X: m.project(X) refined by a deterministic pattern search on
-// poseDistance within the parameter bounds, and Newton steps; the parameters with a closed form
-// (closedFormParams) are set, not searched, and where the rotation is already right (a kink of
-// the metric) a first-order certificate of the minimum ends the search. Never worse than the
-// projection.
+// The pose of manifold m nearest to X: m.project(X) refined by a deterministic search on
+// poseDistance within the parameter bounds (one searched angle: samples and Brent's method; more:
+// a grid, pattern search and Newton steps); the parameters with a closed form (closedFormParams)
+// are set, not searched, and where the rotation is already right (a kink of the metric) a
+// first-order certificate of the minimum ends the search. Never worse than the projection.
 Params nearestParams(const Manifold& m, const Isometry3d& X);
+
+// Whether the pose at nearestParams(m, X), `distance` from X, is proven the nearest of the whole
+// manifold: every parameter has a closed form (the answer is then the global minimum, not a
+// search's), or the distance is X's own rounding (X lies on the manifold; no pose is nearer).
+bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance);
 
 }  // namespace relpos

@@ -52,6 +52,7 @@ struct NearestPose {
   Params parameters{};
   Isometry3d pose = Isometry3d::Identity();
   double distance = 0.0;
+  bool global = false;  // proven the nearest of the whole branch (nearestIsGlobal)
 };
 NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial);
 

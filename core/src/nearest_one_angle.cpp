@@ -1,0 +1,77 @@
+#include "nearest_one_angle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "brent_minimum.hpp"
+#include "nearest_eval.hpp"
+
+namespace relpos::detail {
+namespace {
+// Half the double digits: at a smooth minimum the distance is then exact to rounding (its error is
+// quadratic in the angle's).
+constexpr double kTolerance = 1.4901161193847656e-08;  // 2^-26
+}  // namespace
+
+bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i) {
+  int idx[kMaxDof];
+  if (searchedParams(m, idx) != 1) return false;
+  const Parameter& p = par[idx[0]];
+  *i = idx[0];
+  return p.kind == ParamKind::kAngle &&
+         (p.periodic || (std::isfinite(p.min) && std::isfinite(p.max) && p.min < p.max));
+}
+
+void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter& p, int i,
+                          Params* best, double* best_d) {
+  const unsigned fixed = m.closedFormParams();
+  // Every pose weighed is kept if nearest, so Brent's answer needs no evaluation of its own. NaN (a
+  // closed form that broke down) counts as farthest: it never wins a comparison.
+  auto distanceAt = [&](double v) {
+    Params t = *best;
+    t[i] = v;
+    const double d = distanceWithTail(m, X, fixed, &t);
+    if (std::isnan(d)) return std::numeric_limits<double>::infinity();
+    if (d < *best_d) *best_d = d, *best = t;
+    return d;
+  };
+  // Twelve samples, 30° apart over a turn (periodic: from the projection, the first sample) or
+  // evenly over the bounds, both ends included (a bound is where a ranged minimum often lies).
+  constexpr int kSamples = 12;
+  const double proj = (*best)[i], proj_d = *best_d;
+  const double step = p.periodic ? 2 * kPi / kSamples : (p.max - p.min) / (kSamples - 1);
+  double v[kSamples], d[kSamples];
+  for (int s = 0; s < kSamples; ++s) {
+    // The last sample is the upper bound itself, not min + 11·step (a few ulps short of it).
+    v[s] = p.periodic ? proj + s * step : (s + 1 < kSamples ? p.min + s * step : p.max);
+    d[s] = p.periodic && s == 0 ? proj_d : distanceAt(v[s]);
+  }
+  // Brent (a kink is the caller's to settle), from the sample, over the two steps
+  // around each of the two nearest samples that are nearer than their neighbours. Not only the
+  // nearest: where the angle moves a point far (an ellipse 100 long), a basin 10° wide may hide
+  // between samples that are far, and the projection usually lies in it.
+  auto refineAround = [&](double centre, double centre_d) {
+    double lo = centre - step, hi = centre + step;
+    if (!p.periodic) lo = std::max(lo, p.min), hi = std::min(hi, p.max);
+    brentMinimumFrom(distanceAt, lo, hi, centre, centre_d, kTolerance, 60);
+  };
+  int first = -1, second = -1;
+  for (int s = 0; s < kSamples; ++s) {
+    const bool has_before = p.periodic || s > 0, has_after = p.periodic || s + 1 < kSamples;
+    const double before = d[(s + kSamples - 1) % kSamples], after = d[(s + 1) % kSamples];
+    if ((has_before && before < d[s]) || (has_after && after < d[s])) continue;
+    if (first < 0 || d[s] < d[first]) {
+      second = first, first = s;
+    } else if (second < 0 || d[s] < d[second]) {
+      second = s;
+    }
+  }
+  // A bounded angle's projection lies off the samples: its basin is a candidate of its own.
+  const bool proj_off_lattice = !p.periodic && (first < 0 || proj_d < d[first]);
+  if (first >= 0) refineAround(v[first], d[first]);
+  if (proj_off_lattice) refineAround(proj, proj_d);
+  else if (second >= 0) refineAround(v[second], d[second]);
+}
+
+}  // namespace relpos::detail

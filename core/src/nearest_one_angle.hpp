@@ -1,0 +1,19 @@
+#pragma once
+// The nearest pose of a branch whose only searched parameter is an angle (the others have closed
+// forms given it): a cylinder grasp's turn about the axis, a radial grasp's approach angle.
+#include "relpos/core/manifold.hpp"
+
+namespace relpos::detail {
+
+// Whether θ_i alone is searched and bounded, or periodic: the case nearestAlongOneAngle handles.
+bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i);
+
+// The angle θ_i (the one searched parameter) of the pose nearest X, the others set in closed form:
+// samples evenly over the turn (or the bounds, both ends included, since a bound is where a ranged
+// minimum often lies), then Brent's method over the two sample steps around the best sample.
+// `best` holds the projection on entry (one of the samples) and the answer on return; *best_d its
+// distance.
+void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter& p, int i,
+                          Params* best, double* best_d);
+
+}  // namespace relpos::detail
