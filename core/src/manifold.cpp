@@ -254,8 +254,11 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   double best_d, best_step;
   bool converged;
   int one;
-  if (detail::searchesOneBoundedAngle(m, par, &one)) {
-    best = proj, best_d = proj_d, best_step = 1e-2, converged = true;
+  const bool one_angle = detail::searchesOneBoundedAngle(m, par, &one);
+  if (one_angle) {
+    // Brent's bracket holds a kink as well as a smooth minimum: what is left to a search at a
+    // kink is Brent's last interval, a few times its tolerance (2^-26).
+    best = proj, best_d = proj_d, best_step = 1e-6, converged = true;
     detail::nearestAlongOneAngle(m, X, par[one], one, &best, &best_d);
   } else {
     converged = searchFromProjection(m, X, par, proj, proj_d, &best, &best_d, &best_step);
@@ -277,7 +280,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   const bool settled =
       kink != Kink::kNone ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
   if (!settled) {
-    if (kink != Kink::kNone) best_step = std::max(best_step, 1e-2);
+    if (kink != Kink::kNone && !one_angle) best_step = std::max(best_step, 1e-2);
     best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
     // A search that ended beside the kink (to its last step, 1e-8) is moved onto it.
     if (kinkAt(best) == Kink::kRotation) detail::settleOnRotationKink(m, X, par, &best, &best_d);
