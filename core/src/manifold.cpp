@@ -291,7 +291,9 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
 }
 
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
-  return m.closedFormParams() == (1u << m.dof()) - 1u || distance <= roundingOf(X);
+  // A distance that is not a number proves nothing, whatever the parameters.
+  return std::isfinite(distance) &&
+         (m.closedFormParams() == (1u << m.dof()) - 1u || distance <= roundingOf(X));
 }
 
 }  // namespace relpos
