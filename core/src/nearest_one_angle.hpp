@@ -10,9 +10,9 @@ bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i);
 
 // The angle θ_i (the one searched parameter) of the pose nearest X, the others set in closed form:
 // samples evenly over the turn (or the bounds, both ends included, since a bound is where a ranged
-// minimum often lies), then Brent's method over the two sample steps around the best sample.
-// `best` holds the projection on entry (one of the samples) and the answer on return; *best_d its
-// distance.
+// minimum often lies), then Brent's method over the two sample steps around each of the two
+// nearest samples that are nearer than their neighbours (and around a bounded angle's projection).
+// `best` holds the projection on entry and the answer on return; *best_d its distance.
 void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter& p, int i,
                           Params* best, double* best_d);
 
