@@ -247,7 +247,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // cannot improve on that, and in the combined metric (the translation of the mobile frame's
   // origin) it may trade a rotation too small to see there for one that moves features far from
   // that origin (a part frame 1e6 from its features).
-  if (fixed == (1u << n) - 1u || proj_d <= roundingOf(X)) return proj;
+  if (detail::allParamsClosedForm(m) || proj_d <= roundingOf(X)) return proj;
   Parameter par[kMaxDof];
   for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   Params best;
@@ -293,7 +293,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
   // A distance that is not a number proves nothing, whatever the parameters.
   return std::isfinite(distance) &&
-         (m.closedFormParams() == (1u << m.dof()) - 1u || distance <= roundingOf(X));
+         (detail::allParamsClosedForm(m) || distance <= roundingOf(X));
 }
 
 }  // namespace relpos

@@ -18,6 +18,11 @@ inline double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned 
   return poseDistance(poseWithClosedForms(m, X, closed_form, t), X);
 }
 
+// Whether every parameter of m has a closed form: its nearest pose is then set, not searched.
+inline bool allParamsClosedForm(const Manifold& m) {
+  return m.closedFormParams() == (1u << m.dof()) - 1u;
+}
+
 // The parameters the search moves (those without a closed form), their indices into idx; how many.
 inline int searchedParams(const Manifold& m, int* idx) {
   const unsigned closed_form = m.closedFormParams();

@@ -201,10 +201,9 @@ class ResultReader {
           bad(at + "/nearest/distance", fmt(d) + ", the pose is " + fmt(again) + " away");
       }
     }
-    const bool global = b.contains("nearest_global") && b["nearest_global"].is_boolean() &&
-                        b["nearest_global"].get<bool>();
-    if (!b.contains("nearest_global") || !b["nearest_global"].is_boolean())
-      bad(at + "/nearest_global", "missing or not a boolean");
+    const bool has_global = b.contains("nearest_global") && b["nearest_global"].is_boolean();
+    if (!has_global) bad(at + "/nearest_global", "missing or not a boolean");
+    const bool global = has_global && b["nearest_global"].get<bool>();
     if (expect_.samples > 0) {
       if (!b.contains("samples") || !b["samples"].is_array() ||
           b["samples"].size() != static_cast<std::size_t>(expect_.samples))

@@ -97,7 +97,7 @@ bool settle(const Manifold& m, const Isometry3d& X, Params* best, double* best_d
 }
 
 bool allClosedForm(const Manifold& m) {
-  return m.dof() > 0 && m.closedFormParams() == (1u << m.dof()) - 1u;
+  return m.dof() > 0 && detail::allParamsClosedForm(m);
 }
 
 TEST(NearestStructure, AllClosedFormBranchesAreGloballyNearest) {
