@@ -3,27 +3,16 @@
 #include <Eigen/SVD>
 #include <cmath>
 
-#include "nearest_eval.hpp"
+#include "residual_model.hpp"
 
 namespace relpos::detail {
 namespace {
 
 constexpr int kMaxSearched = 3;  // a rotation has three directions: J_r injective needs k ≤ 3
-// Fixed-capacity matrices: the search allocates nothing.
-using Jacobian = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxSearched>;
-using Step = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSearched, 1>;
 
-struct Residuals {
-  Vector3d t;  // the translation's: Y's origin − X's
-  Vector3d r;  // the rotation's: the axis times the angle of Xᵀ Y
-  double d;    // poseDistance(Y, X) = ‖t‖ + ‖r‖
-};
-
-Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned fixed, Params* t) {
-  const Isometry3d Y = poseWithClosedForms(m, X, fixed, t);
-  return {Y.translation() - X.translation(), rotationVector(X.linear(), Y.linear()),
-          poseDistance(Y, X)};
-}
+// The largest rotation no step can reach that is still treated as a kink's (the distance's
+// curvature across it is about 1/ε, which the model below carries exactly).
+constexpr double kNearKink = 1e-4;
 
 }  // namespace
 
@@ -33,39 +22,38 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
   int idx[kMaxDof];
   const int k = searchedParams(m, idx);
   if (k == 0 || k > kMaxSearched) return false;
-  Jacobian Jr(3, k), Jt(3, k);
   for (int iter = 0; iter < 8; ++iter) {
     Params at = *best;
-    const Residuals here = residualsAt(m, X, fixed, &at);
+    const Linearisation l = linearise(m, X, par, idx, k, &at);
+    const Residuals& here = l.here;
+    const Jacobian &Jr = l.Jr, &Jt = l.Jt;
+    const bool probe_nearer = l.probe_nearer;
     const double angle = here.r.norm();
     if (!(angle < 0.5)) return false;  // far from a kink (or NaN): the smooth search's case
-    // Central differences; a nearer probe means *best is no minimum.
-    bool probe_nearer = false;
-    for (int a = 0; a < k; ++a) {
-      const Parameter& p = par[idx[a]];
-      const double h = 1e-6 * (p.kind == ParamKind::kLength ? 1.0 + std::abs(at[idx[a]]) : 1.0);
-      Params plus = at, minus = at;
-      plus[idx[a]] += h;
-      minus[idx[a]] -= h;
-      const Residuals rp = residualsAt(m, X, fixed, &plus), rm = residualsAt(m, X, fixed, &minus);
-      probe_nearer = probe_nearer || rp.d < here.d || rm.d < here.d;
-      Jr.col(a) = (rp.r - rm.r) / (2 * h);
-      Jt.col(a) = (rp.t - rm.t) / (2 * h);
-    }
     const Eigen::JacobiSVD<Jacobian> svd(Jr, Eigen::ComputeThinU | Eigen::ComputeThinV);
     const auto& sigma = svd.singularValues();
     if (!(sigma[k - 1] > 1e-6 * std::max(1.0, sigma[0]))) return false;  // not injective
-    if (angle <= 1e-12) {
-      // The rotation is X's: the first-order test of the kink.
-      const double tn = here.t.norm();
-      if (tn == 0.0) return true;  // the pose is X itself
-      const Step g = Jt.transpose() * (here.t / tn);
-      // (J_rᵀJ_r)⁻¹ = V Σ⁻² Vᵀ.
-      const Step w = (svd.matrixV().transpose() * g).cwiseQuotient(sigma);
-      return !probe_nearer && w.squaredNorm() < (1.0 - 1e-3) * (1.0 - 1e-3);
-    }
-    // Gauss–Newton on the rotation's residual: J_r δ = −r.
-    const Step delta = svd.solve(-here.r);
+    // The model: d(δ) ≈ d + gᵀδ + √(ε² + ‖J_r (δ − δ₀)‖²), with δ₀ = −J_r⁺ r the Gauss–Newton
+    // step and ε = ‖r + J_r δ₀‖ the rotation no step can reach (an initial pose written with 8
+    // digits misses a reachable rotation by about 1e-8). Convex; where q = gᵀ(J_rᵀJ_r)⁻¹g < 1 its
+    // minimum is at δ₀ − ε (J_rᵀJ_r)⁻¹g / √(1 − q): the kink itself for ε = 0.
+    const double tn = here.t.norm();
+    const Step g = tn > 0.0 ? Step(Jt.transpose() * (here.t / tn)) : Step(Step::Zero(k));
+    // (J_rᵀJ_r)⁻¹ = V Σ⁻² Vᵀ.
+    const Step w = (svd.matrixV().transpose() * g).cwiseQuotient(sigma);
+    const double q = w.squaredNorm();
+    const bool holds = q < (1.0 - 1e-3) * (1.0 - 1e-3);
+    const Step gn = svd.solve(-here.r);
+    const double eps = (here.r + Jr * gn).norm();
+    // Far from the kink, ε is the linear model's error as much as the rotation's: plain steps.
+    const bool near = eps <= kNearKink;
+    const Step delta =
+        holds && near
+            ? Step(gn - (eps / std::sqrt(1.0 - q)) * (svd.matrixV() * w.cwiseQuotient(sigma)))
+            : gn;
+    // At the model's minimum (the rotation X's, or a step below what the distance can resolve):
+    // the first-order test of the kink.
+    if (angle <= 1e-12 || (near && delta.norm() <= 1e-10)) return holds && !probe_nearer;
     Params next = *best;
     for (int a = 0; a < k; ++a) next[idx[a]] = clampParam(par[idx[a]], next[idx[a]] + delta[a]);
     const double d = distanceWithTail(m, X, fixed, &next);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "kink_certificate.hpp"
+#include "kink_descent.hpp"
 #include "nearest_eval.hpp"
 #include "nearest_one_angle.hpp"
 
@@ -252,14 +253,14 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   Params best;
   double best_d, best_step;
-  bool converged;
+  bool converged, settled = false;
   int one;
   const bool one_angle = detail::searchesOneBoundedAngle(m, par, &one);
   if (one_angle) {
     // Brent's bracket holds a kink as well as a smooth minimum: what is left to a search at a
     // kink is Brent's last interval, a few times its tolerance (2^-26).
     best = proj, best_d = proj_d, best_step = 1e-6, converged = true;
-    detail::nearestAlongOneAngle(m, X, par[one], one, &best, &best_d);
+    settled = detail::nearestAlongOneAngle(m, X, par, one, &best, &best_d);
   } else {
     converged = searchFromProjection(m, X, par, proj, proj_d, &best, &best_d, &best_step);
   }
@@ -276,14 +277,22 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     return (Y.translation() - X.translation()).norm() < 1e-4 * best_d ? Kink::kTranslation
                                                                       : Kink::kNone;
   };
-  const Kink kink = kinkAt(best);
-  const bool settled =
-      kink != Kink::kNone ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
+  Kink kink = Kink::kNone;
+  if (!settled) {  // (the one-angle search may have settled its kink already)
+    kink = kinkAt(best);
+    settled =
+        kink != Kink::kNone ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
+  }
   if (!settled) {
     if (kink != Kink::kNone && !one_angle) best_step = std::max(best_step, 1e-2);
     best = patternSearch(m, X, par, best, &best_d, &best_step, kFine);
-    // A search that ended beside the kink (to its last step, 1e-8) is moved onto it.
-    if (kinkAt(best) == Kink::kRotation) detail::settleOnRotationKink(m, X, par, &best, &best_d);
+    // A search that ended beside the kink (to its last step, 1e-8) is moved onto it. Else the
+    // pattern search may have stalled on a crease (where the translation pulls the pose off X's
+    // rotation: a mobile point far from the origin turned onto X's position), which the
+    // distance's convex first-order model steps along.
+    const bool on_kink =
+        kinkAt(best) == Kink::kRotation && detail::settleOnRotationKink(m, X, par, &best, &best_d);
+    if (!on_kink) detail::descendOnDistanceModel(m, X, par, &best, &best_d);
   }
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
@@ -292,8 +301,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
 
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
   // A distance that is not a number proves nothing, whatever the parameters.
-  return std::isfinite(distance) &&
-         (detail::allParamsClosedForm(m) || distance <= roundingOf(X));
+  return std::isfinite(distance) && (detail::allParamsClosedForm(m) || distance <= roundingOf(X));
 }
 
 }  // namespace relpos

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "brent_minimum.hpp"
+#include "kink_certificate.hpp"
 #include "nearest_eval.hpp"
 
 namespace relpos::detail {
@@ -23,9 +24,10 @@ bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i) {
          (p.periodic || (std::isfinite(p.min) && std::isfinite(p.max) && p.min < p.max));
 }
 
-void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter& p, int i,
+bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter* par, int i,
                           Params* best, double* best_d) {
   const unsigned fixed = m.closedFormParams();
+  const Parameter& p = par[i];
   // Every pose weighed is kept if nearest, so Brent's answer needs no evaluation of its own. NaN (a
   // closed form that broke down) counts as farthest: it never wins a comparison.
   auto distanceAt = [&](double v) {
@@ -51,7 +53,19 @@ void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   // around each of the two nearest samples that are nearer than their neighbours. Not only the
   // nearest: where the angle moves a point far (an ellipse 100 long), a basin 10° wide may hide
   // between samples that are far, and the projection usually lies in it.
+  // Near a kink of the rotation (X's rotation reached, or nearly: the distance a V there), Brent
+  // converges by golden sections, one bit a pose; the kink's own steps reach it and prove it a
+  // minimum in a few. The distance of the point so proven, if it ends the nearest.
+  double certified_d = std::numeric_limits<double>::quiet_NaN();
   auto refineAround = [&](double centre, double centre_d) {
+    Params at = *best;
+    at[i] = centre;
+    double at_d = centre_d;
+    if (settleOnRotationKink(m, X, par, &at, &at_d)) {
+      if (at_d <= *best_d) *best = at, *best_d = certified_d = at_d;
+      return;
+    }
+    if (at_d < *best_d) *best = at, *best_d = at_d;  // its steps only ever lower the distance
     double lo = centre - step, hi = centre + step;
     if (!p.periodic) lo = std::max(lo, p.min), hi = std::min(hi, p.max);
     brentMinimumFrom(distanceAt, lo, hi, centre, centre_d, kTolerance, 60);
@@ -70,8 +84,11 @@ void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   // A bounded angle's projection lies off the samples: its basin is a candidate of its own.
   const bool proj_off_lattice = !p.periodic && (first < 0 || proj_d < d[first]);
   if (first >= 0) refineAround(v[first], d[first]);
-  if (proj_off_lattice) refineAround(proj, proj_d);
-  else if (second >= 0) refineAround(v[second], d[second]);
+  if (proj_off_lattice)
+    refineAround(proj, proj_d);
+  else if (second >= 0)
+    refineAround(v[second], d[second]);
+  return *best_d == certified_d;
 }
 
 }  // namespace relpos::detail

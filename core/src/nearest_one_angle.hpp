@@ -11,9 +11,11 @@ bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i);
 // The angle θ_i (the one searched parameter) of the pose nearest X, the others set in closed form:
 // samples evenly over the turn (or the bounds, both ends included, since a bound is where a ranged
 // minimum often lies), then Brent's method over the two sample steps around each of the two
-// nearest samples that are nearer than their neighbours (and around a bounded angle's projection).
-// `best` holds the projection on entry and the answer on return; *best_d its distance.
-void nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter& p, int i,
+// nearest samples that are nearer than their neighbours (and around a bounded angle's projection),
+// or, from a sample near a kink of the rotation, the kink's steps (kink_certificate.hpp). `best`
+// holds the projection on entry and the answer on return; *best_d its distance. True when the
+// answer is a kink proven a local minimum.
+bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter* par, int i,
                           Params* best, double* best_d);
 
 }  // namespace relpos::detail

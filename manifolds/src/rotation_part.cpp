@@ -29,5 +29,8 @@ int RotationPart::spinIndex() const {
 Matrix3d RotationPart::spinBase(const double* theta) const {
   return std::visit([theta](const auto& s) { return s.spinBase(theta); }, shape);
 }
+bool RotationPart::projectsExactly() const {
+  return std::visit([](const auto& s) { return s.projectsExactly(); }, shape);
+}
 
 }  // namespace relpos::manifolds

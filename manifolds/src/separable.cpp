@@ -6,6 +6,12 @@ SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPar
     : rot_(r), trans_(t), dof_(r.dof() + t.dof()) {
   if (!trans_.projectsExactly()) return;
   closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
+  if (rot_.projectsExactly() && trans_.invariantUnderRotation()) {
+    // The distance splits: ‖ΔT‖ depends on the translation parameters alone, the angle on the
+    // rotation's alone, and each part's projection is its own nearest.
+    closed_form_ = (1u << dof()) - 1u;
+    return;
+  }
   const Vector3d* spin_axis = rot_.spinAxis();
   if (spin_axis && trans_.invariantUnderSpin(*spin_axis)) {
     spin_index_ = rot_.spinIndex();
@@ -35,6 +41,7 @@ Params SeparableManifold::project(const Isometry3d& X) const {
 }
 
 Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) const {
+  if (closed_form_ == (1u << dof()) - 1u) return pose(*theta = project(X));
   Isometry3d Y = Isometry3d::Identity();
   if (spin_index_ >= 0) {
     // R = P R(u_m, θ) with P the rotation at θ = 0. The angle between R and X's rotation falls

@@ -26,6 +26,9 @@ bool TranslationPart::projectsExactly() const {
 bool TranslationPart::invariantUnderSpin(const Vector3d& u) const {
   return std::visit([&](const auto& s) { return s.invariantUnderSpin(u); }, shape);
 }
+bool TranslationPart::invariantUnderRotation() const {
+  return std::visit([](const auto& s) { return s.invariantUnderRotation(); }, shape);
+}
 void TranslationPart::translate(const Vector3d& offset_W, const Vector3d& offset_M) {
   std::visit([&](auto& s) { s.translate(offset_W, offset_M); }, shape);
 }

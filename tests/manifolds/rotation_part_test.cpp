@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "random_problems.hpp"
 
@@ -256,6 +258,62 @@ TEST(RotationPart, FixedIsTheNearestRotationAndHasNoParameters) {
   EXPECT_LT(rotationDistance(r.rotation(nullptr), R), 1e-12);
   EXPECT_LT(rotationDistance(r.baseRotation(), R), 1e-12);
   EXPECT_EQ(r.spinAxis(), nullptr);
+}
+
+// The shapes that say their projection is exact (projectsExactly: a fully separable branch
+// then takes it as its nearest pose, nearest_global): no rotation sampled over the whole shape,
+// nor about the projection, is nearer to the target in the geodesic angle. Targets: any rotation,
+// and one a small turn off the shape (where the projection is nearly its own).
+TEST(RotationPart, ExactProjectionsAreTheNearestRotations) {
+  Rng rng(12);
+  std::vector<RotationPart> shapes;
+  for (int i = 0; i < 12; ++i) {
+    const Vector3d um = rng.unit(), uf = rng.unit();
+    shapes.emplace_back(rotation::OneParallel(um, uf));
+    rotation::OneParallel arc(um, uf);
+    arc.phi_lo = rng.uniform(-3.0, 1.0);
+    arc.phi_hi = arc.phi_lo + rng.uniform(0.1, 4.0);
+    arc.phi_periodic = false;
+    shapes.emplace_back(arc);
+    shapes.emplace_back(rotation::OneAngle(um, uf, rng.uniform(0.0, kPi)));
+    const double lo = rng.uniform(0.0, 2.5);
+    shapes.emplace_back(rotation::OneAngleRange(um, uf, lo, lo + rng.uniform(0.05, 0.6)));
+    shapes.emplace_back(rotation::Free{});
+    shapes.emplace_back(rotation::Fixed(rng.pose().linear()));
+  }
+  int checked = 0;
+  for (const RotationPart& r : shapes) {
+    ASSERT_TRUE(r.projectsExactly()) << r.name();
+    const int n = r.dof();
+    auto sample = [&](const double* around, double spread, double* t) {
+      for (int i = 0; i < n; ++i) {
+        const Parameter p = r.parameter(i);
+        const double lo = around ? around[i] - spread : p.min,
+                     hi = around ? around[i] + spread : p.max;
+        t[i] = rng.uniform(lo, hi);
+        if (!p.periodic) t[i] = std::clamp(t[i], p.min, p.max);
+      }
+    };
+    for (int k = 0; k < 6; ++k) {
+      double t[3] = {0, 0, 0}, proj[3] = {0, 0, 0};
+      sample(nullptr, 0.0, t);
+      const Matrix3d target =
+          k % 2 == 0 ? Matrix3d(rng.pose().linear())
+                     : Matrix3d(axisAngle(rng.unit(), rng.uniform(1e-6, 0.05)) * r.rotation(t));
+      r.project(target, proj);
+      const double d = rotationDistance(r.rotation(proj), target);
+      for (int j = 0; j < 1500; ++j) {
+        sample(j % 2 == 0 ? nullptr : proj, j % 4 == 1 ? 1e-3 : 0.1, t);
+        ASSERT_GE(rotationDistance(r.rotation(t), target), d - 1e-9) << r.name();
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 12 * 6 * 6);
+  // A shape the projection only scans (two angles) does not say so.
+  EXPECT_FALSE(RotationPart(rotation::TwoAngle(rotation::OneAngle(rng.unit(), rng.unit(), 1.0),
+                                               rng.unit(), rng.unit(), 0.3))
+                   .projectsExactly());
 }
 
 TEST(RotationPart, NamesAreTheOnesResultsWrite) {

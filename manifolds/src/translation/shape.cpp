@@ -66,6 +66,17 @@ bool mobileGeometryInvariant(const Fundamental& f, const Vector3d& u) {
   }
 }
 
+bool mobilePointAtOrigin(const Fundamental& f) {
+  switch (f.kind) {
+    case FundamentalKind::kPointPoint:
+    case FundamentalKind::kPointLine:
+    case FundamentalKind::kPointPlane:
+      return f.point_side == Side::kMobile && f.p == Vector3d::Zero();
+    default:
+      return false;
+  }
+}
+
 namespace translation {
 
 Parameter lengthParameter(const char* name) {

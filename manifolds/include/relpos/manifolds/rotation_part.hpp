@@ -28,6 +28,7 @@ struct RotationPart {
   const Vector3d* spinAxis() const;
   int spinIndex() const;
   Matrix3d spinBase(const double* theta) const;
+  bool projectsExactly() const;
 
   template <typename Shape>
   const Shape* as() const {

@@ -22,7 +22,10 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   // The translation parameters, when its projection is exact; and then also the spin θ about
   // the mobile axis u_m of a rotation with a spin (R = … R(u_m, θ): one parallel, one angle, an
   // angle range) when the translation set does not move with it: θ only turns the rotation, and
-  // the nearest spin is closed form (on its arc, when it has one).
+  // the nearest spin is closed form (on its arc, when it has one). Every parameter, when the
+  // translation set does not move with the rotation at all (its mobile points at the mobile
+  // origin) and the rotation's projection is its nearest rotation: the projection is then the
+  // branch's nearest pose.
   unsigned closedFormParams() const override { return closed_form_; }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;

@@ -25,6 +25,7 @@ struct TranslationPart {
   Vector3d projectAndPlace(const Matrix3d& R, const Vector3d& T, double* t) const;
   bool projectsExactly() const;
   bool invariantUnderSpin(const Vector3d& u) const;
+  bool invariantUnderRotation() const;
   void translate(const Vector3d& offset_W, const Vector3d& offset_M);
 
   template <typename Shape>

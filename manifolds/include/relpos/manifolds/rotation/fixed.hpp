@@ -17,6 +17,8 @@ struct Fixed : ShapeBase<Fixed> {
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
+  // Its only rotation.
+  bool projectsExactly() const { return true; }
   Matrix3d baseRotation() const { return R0; }
 };
 

@@ -12,6 +12,8 @@ struct Free : ShapeBase<Free> {
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
+  // R itself.
+  bool projectsExactly() const { return true; }
 };
 
 }  // namespace relpos::manifolds::rotation

@@ -16,6 +16,9 @@ struct OneAngle : ShapeBase<OneAngle> {
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
+  // The cone's vector nearest R u_m (its azimuth), then the best spin: the angle between a
+  // rotation and the nearest one taking u_m to a vector v is the angle between R u_m and v.
+  bool projectsExactly() const { return true; }
   Matrix3d baseRotation() const { return R0; }
   const Vector3d* spinAxis() const { return &u_m; }
   Matrix3d spinBase(const double* theta) const;

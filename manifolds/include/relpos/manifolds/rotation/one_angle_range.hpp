@@ -20,6 +20,9 @@ struct OneAngleRange : ShapeBase<OneAngleRange> {
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
+  // As for one angle, with R u_m's angle from u_f clamped to the range: the band's vector
+  // nearest R u_m.
+  bool projectsExactly() const { return true; }
   const Vector3d* spinAxis() const { return &u_m; }
   Matrix3d spinBase(const double* theta) const;
 };

@@ -19,6 +19,8 @@ struct OneParallel : ShapeBase<OneParallel> {
   Parameter parameter(int i) const;
   Matrix3d rotation(const double* theta) const;
   void project(const Matrix3d& R, double* theta) const;
+  // The best spin about u_f, on its arc the end nearer to it in angle.
+  bool projectsExactly() const { return true; }
   Matrix3d baseRotation() const { return R0; }
   // R(u_f, φ) R0 = R0 R(u_m, φ) (R0 u_m = u_f): a spin about u_m, its only parameter.
   const Vector3d* spinAxis() const { return &u_m; }

@@ -28,6 +28,10 @@ struct ShapeBase {
     (void)theta;
     return Matrix3d::Identity();
   }
+  // Whether project() gives the rotation of the shape nearest R in the geodesic angle (a closed
+  // form, not a scan): with a translation that does not move with the rotation, the branch's
+  // nearest pose is then its projection.
+  bool projectsExactly() const { return false; }
 };
 
 // A full turn, named `name`.

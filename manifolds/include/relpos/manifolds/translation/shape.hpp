@@ -42,6 +42,11 @@ Vector3d whereLineMeetsPlane(const Vector3d& c, const Vector3d& d, const TShape&
 // to it.
 bool mobileGeometryInvariant(const Fundamental& f, const Vector3d& u);
 
+// Whether constraint f confines T the same way for every R: a point-based constraint whose
+// mobile point is the mobile origin, exactly (T = S_f − R·0; a point off it by any amount moves
+// T with R, and the branch's nearest pose would no longer be its projection).
+bool mobilePointAtOrigin(const Fundamental& f);
+
 namespace translation {
 
 template <typename Derived>
@@ -60,6 +65,14 @@ struct ShapeBase {
     bool all = true;
     Derived::eachConstraint(
         self(), [&](const Fundamental& f) { all = all && mobileGeometryInvariant(f, u); });
+    return all;
+  }
+  // Whether the translation set, for given parameters, is the same for every R: each constraint's
+  // mobile point is the mobile origin.
+  bool invariantUnderRotation() const {
+    bool all = true;
+    Derived::eachConstraint(self(),
+                            [&](const Fundamental& f) { all = all && mobilePointAtOrigin(f); });
     return all;
   }
   // Every constraint's fixed point moved by offset_W, its mobile point by offset_M.

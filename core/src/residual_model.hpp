@@ -1,0 +1,55 @@
+#pragma once
+// The first-order model of the distance the nearest-pose search minimises at a kink
+// (kink_certificate.cpp, kink_descent.cpp): the translation's and the rotation's residuals at θ,
+// once its closed-form parameters are set, and their Jacobians in the searched parameters.
+#include <Eigen/Core>
+
+#include "nearest_eval.hpp"
+
+namespace relpos::detail {
+
+// Fixed-capacity matrices, one column per searched parameter: the search allocates nothing.
+using Jacobian = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, kMaxDof>;
+using Step = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDof, 1>;
+
+struct Residuals {
+  Vector3d t;  // the translation's: Y's origin − X's
+  Vector3d r;  // the rotation's: the axis times the angle of Xᵀ Y
+  double d;    // poseDistance(Y, X) = ‖t‖ + ‖r‖
+};
+
+inline Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned closed_form,
+                             Params* t) {
+  const Isometry3d Y = poseWithClosedForms(m, X, closed_form, t);
+  return {Y.translation() - X.translation(), rotationVector(X.linear(), Y.linear()),
+          poseDistance(Y, X)};
+}
+
+struct Linearisation {
+  Residuals here;  // at θ (its closed-form parameters set)
+  Jacobian Jt, Jr;
+  bool probe_nearer = false;  // a probe of the differences nearer than θ: θ is no minimum
+};
+
+// The residuals at *at and their Jacobians in the k searched parameters idx by central
+// differences (a length's step relative to its size). 1 + 2k poses.
+inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
+                               const int* idx, int k, Params* at) {
+  const unsigned closed_form = m.closedFormParams();
+  Linearisation l{residualsAt(m, X, closed_form, at), Jacobian(3, k), Jacobian(3, k), false};
+  for (int a = 0; a < k; ++a) {
+    const Parameter& p = par[idx[a]];
+    const double h = 1e-6 * (p.kind == ParamKind::kLength ? 1.0 + std::abs((*at)[idx[a]]) : 1.0);
+    Params plus = *at, minus = *at;
+    plus[idx[a]] += h;
+    minus[idx[a]] -= h;
+    const Residuals rp = residualsAt(m, X, closed_form, &plus);
+    const Residuals rm = residualsAt(m, X, closed_form, &minus);
+    l.probe_nearer = l.probe_nearer || rp.d < l.here.d || rm.d < l.here.d;
+    l.Jr.col(a) = (rp.r - rm.r) / (2 * h);
+    l.Jt.col(a) = (rp.t - rm.t) / (2 * h);
+  }
+  return l;
+}
+
+}  // namespace relpos::detail
