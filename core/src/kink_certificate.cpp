@@ -13,6 +13,7 @@ constexpr int kMaxSearched = 3;  // a rotation has three directions: J_r injecti
 // The largest rotation no step can reach that is still treated as a kink's (the distance's
 // curvature across it is about 1/ε, which the model below carries exactly).
 constexpr double kNearKink = 1e-4;
+constexpr double kUnreachable = 0.25;
 
 }  // namespace
 
@@ -47,6 +48,9 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     const double eps = (here.r + Jr * gn).norm();
     // Far from the kink, ε is the linear model's error as much as the rotation's: plain steps.
     const bool near = eps <= kNearKink;
+    // Most of the rotation out of the parameters' reach: X's rotation is no kink of the branch
+    // near here (a reachable one leaves ε of the model's second-order error, about angle²).
+    if (!near && eps > kUnreachable * angle) return false;
     const Step delta =
         holds && near
             ? Step(gn - (eps / std::sqrt(1.0 - q)) * (svd.matrixV() * w.cwiseQuotient(sigma)))
