@@ -39,7 +39,7 @@ double roundingOf(const Isometry3d& X) {
 // sweep that improved, the move just made is tried again from the new point (the pattern move),
 // which walks a valley in a few evaluations where plain compass steps would zig-zag.
 Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* par, Params best,
-                     double* best_d, double* step, double min_step) {
+                     double* best_d, double* step, double min_step, bool in_units = false) {
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
   auto eval = [&](Params& t) { return distanceWithTail(m, X, fixed, &t); };
@@ -48,8 +48,9 @@ Params patternSearch(const Manifold& m, const Isometry3d& X, const Parameter* pa
       if (fixed & (1u << i)) continue;
       for (double sgn : {1.0, -1.0}) {
         Params t = base;
-        const double s =
-            par[i].kind == ParamKind::kLength ? *step * (1.0 + std::abs(base[i])) : *step;
+        const double s = par[i].kind == ParamKind::kLength ? *step * (1.0 + std::abs(base[i]))
+                         : in_units                        ? *step * detail::searchUnit(par[i])
+                                                           : *step;
         t[i] = clampParam(par[i], t[i] + sgn * s);
         const double dt = eval(t);
         if (dt < *d - 1e-15) {
@@ -216,6 +217,41 @@ bool searchFromProjection(const Manifold& m, const Isometry3d& X, const Paramete
   return converged;
 }
 
+// Parameters whose box is narrow (a chart's tangent coordinates, a few thousandths wide): the
+// general search's steps, a quarter and down, jump from bound to bound, which finds the corner a
+// far pose is nearest but not a minimum inside the box. The pattern search again in the box's own
+// unit with the model's steps, from *best and from the nearest corner of the box (a far pose is
+// often nearest at a corner, or along an edge from one); the nearer. Nothing for other branches.
+void refineInNarrowBox(const Manifold& m, const Isometry3d& X, const Parameter* par, Params* best,
+                       double* best_d) {
+  int idx[kMaxDof];
+  const int k = detail::searchedParams(m, idx);
+  bool narrow = false;
+  for (int a = 0; a < k; ++a) narrow = narrow || detail::searchUnit(par[idx[a]]) < 1.0;
+  if (!narrow) return;
+  auto refine = [&](Params* t, double* d) {
+    double step = 0.25;
+    *t = patternSearch(m, X, par, *t, d, &step, kFine, true);
+    detail::descendOnDistanceModel(m, X, par, t, d);
+  };
+  refine(best, best_d);
+  if (k > 4) return;  // 2^k corners
+  const unsigned fixed = m.closedFormParams();
+  Params corner = *best;
+  double corner_d = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < (1 << k); ++c) {
+    Params t = *best;
+    for (int a = 0; a < k; ++a) {
+      const Parameter& p = par[idx[a]];
+      if (detail::searchUnit(p) < 1.0) t[idx[a]] = (c >> a) & 1 ? p.max : p.min;
+    }
+    const double d = distanceWithTail(m, X, fixed, &t);
+    if (d < corner_d) corner_d = d, corner = t;
+  }
+  refine(&corner, &corner_d);
+  if (corner_d < *best_d) *best = corner, *best_d = corner_d;
+}
+
 }  // namespace
 
 Params referenceParams(const Manifold& m) {
@@ -294,6 +330,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
         kinkAt(best) == Kink::kRotation && detail::settleOnRotationKink(m, X, par, &best, &best_d);
     if (!on_kink) detail::descendOnDistanceModel(m, X, par, &best, &best_d);
   }
+  refineInNarrowBox(m, X, par, &best, &best_d);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;

@@ -32,6 +32,16 @@ inline int searchedParams(const Manifold& m, int* idx) {
   return k;
 }
 
+// The unit a search in a parameter's own scale measures θ_i in: 1 for an angle or a length (a
+// length's step is relative to its size besides), and for a parameter of another kind with
+// bounds narrower than ±1 its radius (a chart's tangent coordinates span a box a few thousandths
+// wide, which steps of a quarter only jump across).
+inline double searchUnit(const Parameter& p) {
+  if (p.kind != ParamKind::kOther || !(p.max > p.min) || p.periodic) return 1.0;
+  const double radius = 0.5 * (p.max - p.min);
+  return radius < 1.0 ? radius : 1.0;
+}
+
 // θ_i kept within its bounds (a periodic one wraps instead).
 inline double clampParam(const Parameter& p, double v) {
   if (p.periodic) return v;

@@ -32,14 +32,16 @@ struct Linearisation {
 };
 
 // The residuals at *at and their Jacobians in the k searched parameters idx by central
-// differences (a length's step relative to its size). 1 + 2k poses.
+// differences (a length's step relative to its size, another's to its search unit). 1 + 2k
+// poses.
 inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
                                const int* idx, int k, Params* at) {
   const unsigned closed_form = m.closedFormParams();
   Linearisation l{residualsAt(m, X, closed_form, at), Jacobian(3, k), Jacobian(3, k), false};
   for (int a = 0; a < k; ++a) {
     const Parameter& p = par[idx[a]];
-    const double h = 1e-6 * (p.kind == ParamKind::kLength ? 1.0 + std::abs((*at)[idx[a]]) : 1.0);
+    const double h =
+        1e-6 * (p.kind == ParamKind::kLength ? 1.0 + std::abs((*at)[idx[a]]) : searchUnit(p));
     Params plus = *at, minus = *at;
     plus[idx[a]] += h;
     minus[idx[a]] -= h;
