@@ -16,6 +16,10 @@ double poseDistance(const Isometry3d& a, const Isometry3d& b) {
   return (a.translation() - b.translation()).norm() + rotationDistance(a.linear(), b.linear());
 }
 
+double Manifold::searchDistance(const Isometry3d& X, Params* theta) const {
+  return poseDistance(poseWithTail(X, theta), X);
+}
+
 bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
   Isometry3d Y = pose(project(X));
   double scale = std::max(1.0, X.translation().norm());
@@ -274,10 +278,10 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
   Params proj = m.project(X);
-  double proj_d = distanceWithTail(m, X, fixed, &proj);
+  double proj_d = detail::distanceWithTailSet(m, X, fixed, &proj);
   if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
     proj = referenceParams(m);
-    proj_d = distanceWithTail(m, X, fixed, &proj);
+    proj_d = detail::distanceWithTailSet(m, X, fixed, &proj);
     if (std::isnan(proj_d)) return referenceParams(m);
   }
   // A pose on the manifold is its own projection, to the rounding of its coordinates: the search
@@ -331,6 +335,8 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     if (!on_kink) detail::descendOnDistanceModel(m, X, par, &best, &best_d);
   }
   refineInNarrowBox(m, X, par, &best, &best_d);
+  // The closed-form parameters as poseWithTail sets them (searchDistance may leave a spin unset).
+  if (fixed != 0u) m.poseWithTail(X, &best);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;

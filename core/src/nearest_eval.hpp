@@ -12,9 +12,17 @@ inline Isometry3d poseWithClosedForms(const Manifold& m, const Isometry3d& X, un
   return closed_form != 0u ? m.poseWithTail(X, t) : m.pose(*t);
 }
 
-// The pose distance at θ once its closed-form parameters are set (written into θ).
+// The pose distance at θ once its closed-form parameters are set, as the search weighs it
+// (Manifold::searchDistance: the closed-form parameters written into θ may be left unset or
+// stale, to be set by poseWithTail before the parameters are read).
 inline double distanceWithTail(const Manifold& m, const Isometry3d& X, unsigned closed_form,
                                Params* t) {
+  return closed_form != 0u ? m.searchDistance(X, t) : poseDistance(m.pose(*t), X);
+}
+
+// The same with every closed-form parameter set in θ.
+inline double distanceWithTailSet(const Manifold& m, const Isometry3d& X, unsigned closed_form,
+                                  Params* t) {
   return poseDistance(poseWithClosedForms(m, X, closed_form, t), X);
 }
 

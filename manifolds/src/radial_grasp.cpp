@@ -89,28 +89,22 @@ unsigned RadialGraspManifold::closedFormParams() const {
   return spin_closed_ ? between | (1u << (lengths + 1)) : between;
 }
 
-Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
-  Params& t = *th;
-  const int k_theta = dof() - 1;
-  // X = outer · T(r, 0, z) · inner with outer = F Rz(ψ) and inner = A_σ Rz(θ) L⁻¹; X's origin in
-  // the frame `outer`, less the part that turns with θ, is what (r, 0, z) must match. In 3×3
-  // pieces (the search calls this tens of times a branch): Rz(ψ) only turns F's first two
-  // columns, and A_σ has no translation.
+Matrix3d RadialGraspManifold::outerRotation(double psi) const {
+  // Rz(ψ) only turns F's first two columns (the search calls this tens of times a branch).
   const Matrix3d& F = F_.linear();
-  const double c = std::cos(t[0]), s = std::sin(t[0]);
+  const double c = std::cos(psi), s = std::sin(psi);
   Matrix3d outer;
   outer.col(0) = c * F.col(0) + s * F.col(1);
   outer.col(1) = c * F.col(1) - s * F.col(0);
   outer.col(2) = F.col(2);
-  const Matrix3d P = outer * A_.linear();
-  const Matrix3d& Q = L_inv_.linear();
-  // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
-  Matrix3d spin;
-  if (spin_closed_)
-    t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), Q * X.linear().transpose() * P, &spin);
-  else
-    spin = axisAngle(Vector3d::UnitZ(), t[k_theta]);
-  const Vector3d inner_t = A_.linear() * (spin * L_inv_.translation());
+  return outer;
+}
+
+Vector3d RadialGraspManifold::placeTip(const Isometry3d& X, const Matrix3d& outer,
+                                       const Vector3d& inner_t, Params* th) const {
+  // X = outer · T(r, 0, z) · inner: X's origin in the frame `outer`, less the part that turns
+  // with θ, is what (r, 0, z) must match, clamped to the rectangle of radius × height.
+  Params& t = *th;
   const Vector3d p = outer.transpose() * (X.translation() - F_.translation()) - inner_t;
   int k = 1;
   double h = s_.h_lo, r = s_.r_lo;
@@ -120,10 +114,40 @@ Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) co
     t[k++] = h;
   }
   if (rRanged()) t[k] = r = std::min(s_.r_hi, std::max(s_.r_lo, p.x()));
+  return F_.translation() + outer * (Vector3d(r, 0.0, axisHeightOf(h)) + inner_t);
+}
+
+Isometry3d RadialGraspManifold::poseWithTail(const Isometry3d& X, Params* th) const {
+  Params& t = *th;
+  const int k_theta = dof() - 1;
+  // X = outer · T(r, 0, z) · inner with outer = F Rz(ψ) and inner = A_σ Rz(θ) L⁻¹ (A_σ has no
+  // translation).
+  const Matrix3d outer = outerRotation(t[0]);
+  const Matrix3d P = outer * A_.linear();
+  const Matrix3d& Q = L_inv_.linear();
+  // R = P Rz(θ) Q: the θ maximising trace(Rz(θ) Q Xᵀ P).
+  Matrix3d spin;
+  if (spin_closed_)
+    t[k_theta] = bestSpinAbout(Vector3d::UnitZ(), Q * X.linear().transpose() * P, &spin);
+  else
+    spin = axisAngle(Vector3d::UnitZ(), t[k_theta]);
+  const Vector3d inner_t = A_.linear() * (spin * L_inv_.translation());
   Isometry3d Y = Isometry3d::Identity();
   Y.linear() = P * (spin * Q);
-  Y.translation() = F_.translation() + outer * (Vector3d(r, 0.0, axisHeightOf(h)) + inner_t);
+  Y.translation() = placeTip(X, outer, inner_t, th);
   return Y;
+}
+
+double RadialGraspManifold::searchDistance(const Isometry3d& X, Params* th) const {
+  if (!spin_closed_) return poseDistance(poseWithTail(X, th), X);
+  // R = P Rz(θ) Q takes the approach direction Qᵀz to P z whatever θ; the least angle from X
+  // over θ is the angle between X Qᵀz and P z (SeparableManifold::searchDistance says why).
+  // The mobile origin lies on the approach line, which Rz(θ) leaves in place.
+  const Matrix3d outer = outerRotation((*th)[0]);
+  const Vector3d a = outer * A_.linear().col(2);
+  const Vector3d b = X.linear() * L_inv_.linear().row(2).transpose();
+  const Vector3d T = placeTip(X, outer, A_.linear() * L_inv_.translation(), th);
+  return (T - X.translation()).norm() + std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 bool RadialGraspManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {

@@ -16,6 +16,8 @@ SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPar
   if (spin_axis && trans_.invariantUnderSpin(*spin_axis)) {
     spin_index_ = rot_.spinIndex();
     closed_form_ |= 1u << spin_index_;
+    const Parameter arc = rot_.parameter(spin_index_);
+    full_spin_ = arc.periodic || arc.max - arc.min >= 2 * kPi;
   }
 }
 
@@ -52,8 +54,8 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
     Matrix3d spin;
     double& s = t[spin_index_];
     s = bestSpinAbout(u, X.linear().transpose() * P, &spin);
-    const Parameter arc = rot_.parameter(spin_index_);
-    if (!arc.periodic && arc.max - arc.min < 2 * kPi) {
+    if (!full_spin_) {
+      const Parameter arc = rot_.parameter(spin_index_);
       const double on_arc = rotation::ontoArc(s, arc.min, arc.max);
       if (on_arc != s) spin = axisAngle(u, s = on_arc);
     }
@@ -63,6 +65,18 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
   }
   Y.translation() = trans_.projectAndPlace(Y.linear(), X.translation(), theta->data() + rot_.dof());
   return Y;
+}
+
+double SeparableManifold::searchDistance(const Isometry3d& X, Params* theta) const {
+  if (spin_index_ < 0 || !full_spin_) return poseDistance(poseWithTail(X, theta), X);
+  // The rotations P R(u_m, θ) are those taking u_m to P u_m. A rotation by an angle moves no
+  // vector farther than that angle, and the least turn taking X u_m onto P u_m is one of them:
+  // the least angle from X over the spin is the angle between X u_m and P u_m.
+  const Matrix3d P = rot_.spinBase(theta->data());
+  const Vector3d& u = *rot_.spinAxis();
+  const Vector3d a = P * u, b = X.linear() * u;
+  const Vector3d T = trans_.projectAndPlace(P, X.translation(), theta->data() + rot_.dof());
+  return (T - X.translation()).norm() + std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {

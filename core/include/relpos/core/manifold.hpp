@@ -79,6 +79,14 @@ class Manifold {
   // Last in the table of virtual functions, so that the earlier entries keep their places.
   virtual ManifoldKind kind() const { return ManifoldKind::kOther; }
 
+  // The distance the nearest-pose search weighs at θ: poseDistance(poseWithTail(X, θ), X), with
+  // the closed-form parameters set in θ (the default). A type may answer without building the
+  // pose, and leave unset a closed-form spin that only turns the rotation about a mobile axis:
+  // the least angle over a full turn of spin is the angle between that axis's two directions, a
+  // closed form of its own. The search calls poseWithTail before it reads the parameters.
+  // (After kind(): added with plugin ABI 8.)
+  virtual double searchDistance(const Isometry3d& X, Params* theta) const;
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };

@@ -41,6 +41,9 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   // rotation, and the nearest spin is closed form.
   unsigned closedFormParams() const override;
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
+  // With the spin closed form, the angle between the approach line's two directions (the least
+  // angle over the spin) and the fingertip placed without the spin, which does not move it.
+  double searchDistance(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
 
@@ -50,6 +53,12 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   bool hFree() const { return !s_.has_height || s_.h_lo != s_.h_hi; }
   double axisHeightOf(double h) const;  // z along the axis for a plane value h
   double planeValueOf(double z) const;
+  // F Rz(ψ): the axis frame's rotation turned by ψ.
+  Matrix3d outerRotation(double psi) const;
+  // The height and radius nearest X (set in θ) for the frame `outer` and the part of the origin
+  // that turns with θ, `inner_t`; returns the pose's translation.
+  Vector3d placeTip(const Isometry3d& X, const Matrix3d& outer, const Vector3d& inner_t,
+                    Params* theta) const;
   RadialGraspSpec s_;
   Isometry3d F_, L_inv_, A_;
   bool spin_closed_ = false;

@@ -28,6 +28,10 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   // branch's nearest pose.
   unsigned closedFormParams() const override { return closed_form_; }
   Isometry3d poseWithTail(const Isometry3d& X, Params* theta) const override;
+  // With a closed-form spin over a full turn, the angle between u_m's two directions and the
+  // translation placed with the rotation at θ = 0 (which the spin does not move): the spin and
+  // its matrices are left to poseWithTail.
+  double searchDistance(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   // The translation part's points move; the closed forms are decided again (whether the spin
   // moves the translation depends on where the mobile origin is).
@@ -41,6 +45,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   int dof_ = 0;  // kept: a translation part of planes counts its rows to know it
   unsigned closed_form_ = 0u;
   int spin_index_ = -1;  // the spin θ (RotationPart::spinAxis) when closed form, else −1
+  bool full_spin_ = false;  // … and a full turn (not an arc)
 };
 // Stored inline in a Branch (ManifoldHolder): the largest shapes of the two variants together.
 static_assert(sizeof(SeparableManifold) <= kManifoldStorage, "separable manifold too large");
