@@ -89,10 +89,16 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b) {
   return angleOf(a, b, &sin_axis);
 }
 
-Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b) {
+Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b, double* angle) {
   Vector3d sin_axis;
-  const double angle = angleOf(a, b, &sin_axis), s = sin_axis.norm();
-  return s > 0.0 ? Vector3d(sin_axis * (angle / s)) : Vector3d::Zero();
+  *angle = angleOf(a, b, &sin_axis);
+  const double s = sin_axis.norm();
+  return s > 0.0 ? Vector3d(sin_axis * (*angle / s)) : Vector3d::Zero();
+}
+
+Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b) {
+  double angle;
+  return rotationVector(a, b, &angle);
 }
 
 namespace {

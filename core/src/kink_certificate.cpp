@@ -31,30 +31,38 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     const bool probe_nearer = l.probe_nearer;
     const double angle = here.r.norm();
     if (!(angle < 0.5)) return false;  // far from a kink (or NaN): the smooth search's case
-    const Eigen::JacobiSVD<Jacobian> svd(Jr, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const auto& sigma = svd.singularValues();
-    if (!(sigma[k - 1] > 1e-6 * std::max(1.0, sigma[0]))) return false;  // not injective
     // The model: d(δ) ≈ d + gᵀδ + √(ε² + ‖J_r (δ − δ₀)‖²), with δ₀ = −J_r⁺ r the Gauss–Newton
     // step and ε = ‖r + J_r δ₀‖ the rotation no step can reach (an initial pose written with 8
     // digits misses a reachable rotation by about 1e-8). Convex; where q = gᵀ(J_rᵀJ_r)⁻¹g < 1 its
     // minimum is at δ₀ − ε (J_rᵀJ_r)⁻¹g / √(1 − q): the kink itself for ε = 0.
     const double tn = here.t.norm();
     const Step g = tn > 0.0 ? Step(Jt.transpose() * (here.t / tn)) : Step(Step::Zero(k));
-    // (J_rᵀJ_r)⁻¹ = V Σ⁻² Vᵀ.
-    const Step w = (svd.matrixV().transpose() * g).cwiseQuotient(sigma);
-    const double q = w.squaredNorm();
+    Step gn(k), Gg(k);  // δ₀ and (J_rᵀJ_r)⁻¹ g
+    double q;
+    if (k == 1) {  // one searched angle (the common case): σ = ‖J_r‖, no decomposition
+      const double sigma = Jr.col(0).norm();
+      if (!(sigma > 1e-6)) return false;  // not injective
+      gn[0] = -Jr.col(0).dot(here.r) / (sigma * sigma);
+      Gg[0] = g[0] / (sigma * sigma);
+      q = g[0] * Gg[0];
+    } else {
+      const Eigen::JacobiSVD<Jacobian> svd(Jr, Eigen::ComputeThinU | Eigen::ComputeThinV);
+      const auto& sigma = svd.singularValues();
+      if (!(sigma[k - 1] > 1e-6 * std::max(1.0, sigma[0]))) return false;  // not injective
+      // (J_rᵀJ_r)⁻¹ = V Σ⁻² Vᵀ.
+      const Step w = (svd.matrixV().transpose() * g).cwiseQuotient(sigma);
+      q = w.squaredNorm();
+      Gg = svd.matrixV() * w.cwiseQuotient(sigma);
+      gn = svd.solve(-here.r);
+    }
     const bool holds = q < (1.0 - 1e-3) * (1.0 - 1e-3);
-    const Step gn = svd.solve(-here.r);
     const double eps = (here.r + Jr * gn).norm();
     // Far from the kink, ε is the linear model's error as much as the rotation's: plain steps.
     const bool near = eps <= kNearKink;
     // Most of the rotation out of the parameters' reach: X's rotation is no kink of the branch
     // near here (a reachable one leaves ε of the model's second-order error, about angle²).
     if (!near && eps > kUnreachable * angle) return false;
-    const Step delta =
-        holds && near
-            ? Step(gn - (eps / std::sqrt(1.0 - q)) * (svd.matrixV() * w.cwiseQuotient(sigma)))
-            : gn;
+    const Step delta = holds && near ? Step(gn - (eps / std::sqrt(1.0 - q)) * Gg) : gn;
     // At the model's minimum (the rotation X's, or a step below what the distance can resolve):
     // the first-order test of the kink.
     if (angle <= 1e-12 || (near && delta.norm() <= 1e-10)) return holds && !probe_nearer;

@@ -21,8 +21,12 @@ struct Residuals {
 inline Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned closed_form,
                              Params* t) {
   const Isometry3d Y = poseWithClosedForms(m, X, closed_form, t);
-  return {Y.translation() - X.translation(), rotationVector(X.linear(), Y.linear()),
-          poseDistance(Y, X)};
+  Residuals res;
+  res.t = Y.translation() - X.translation();
+  double angle;
+  res.r = rotationVector(X.linear(), Y.linear(), &angle);
+  res.d = res.t.norm() + angle;  // poseDistance(Y, X), its rotation angle computed once
+  return res;
 }
 
 struct Linearisation {

@@ -123,6 +123,23 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
     const double a = rows.h0[i] + rows.sign[i] * f.lo, b = rows.h0[i] + rows.sign[i] * f.hi;
     lo[i] = std::min(a, b), hi[i] = std::max(a, b);
   }
+  // Mutually orthogonal rows (a box; a seam, its two planes, and a range across its ends): each
+  // row's height moves along its own normal only, so clamping each on its own is the nearest
+  // point, with no active set to search.
+  bool orthogonal = true;
+  for (int i = 0; i < rows.k && orthogonal; ++i)
+    for (int j = 0; j < i && orthogonal; ++j)
+      orthogonal = std::abs(rows.n[i].dot(rows.n[j])) <=
+                   1e-12 * rows.n[i].norm() * rows.n[j].norm();
+  if (orthogonal) {
+    Vector3d x = T;
+    for (int i = 0; i < rows.k; ++i) {
+      const double h = rows.n[i].dot(T);
+      const double target = std::min(hi[i], std::max(lo[i], h));
+      x += ((target - h) / rows.n[i].squaredNorm()) * rows.n[i];
+    }
+    return x;
+  }
   Vector3d best = T;
   double best_d = std::numeric_limits<double>::infinity();
   int combos = 1;

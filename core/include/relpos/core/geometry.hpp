@@ -52,6 +52,8 @@ double rotationDistance(const Matrix3d& a, const Matrix3d& b);
 // The rotation taking a to b in a's frame as its axis times its angle (aᵀb = exp([v]×)): its norm
 // is rotationDistance(a, b); smooth where the angle is small (the nearest-pose search's residual).
 Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b);
+// The same, and *angle = rotationDistance(a, b) (which the vector's norm loses at exactly π).
+Vector3d rotationVector(const Matrix3d& a, const Matrix3d& b, double* angle);
 
 // The φ maximising trace(R(u, φ) M). With M = Xᵀ P (or Q Xᵀ P), the spin R = P R(u, φ) (or
 // P R(u, φ) Q) nearest the rotation X: the geodesic angle falls as the trace grows.
