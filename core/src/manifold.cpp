@@ -277,7 +277,9 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // search's.
   const int n = m.dof();
   const unsigned fixed = m.closedFormParams();
-  Params proj = m.project(X);
+  // (A branch whose every parameter has a closed form is projected by poseWithTail itself.)
+  const bool all_closed_form = detail::allParamsClosedForm(m);
+  Params proj = all_closed_form ? Params{} : m.project(X);
   double proj_d = detail::distanceWithTailSet(m, X, fixed, &proj);
   if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
     proj = referenceParams(m);
@@ -288,7 +290,7 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // cannot improve on that, and in the combined metric (the translation of the mobile frame's
   // origin) it may trade a rotation too small to see there for one that moves features far from
   // that origin (a part frame 1e6 from its features).
-  if (detail::allParamsClosedForm(m) || proj_d <= roundingOf(X)) return proj;
+  if (all_closed_form || proj_d <= roundingOf(X)) return proj;
   Parameter par[kMaxDof];
   for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   Params best;

@@ -161,6 +161,39 @@ TEST(NearestStructure, NearestGlobalOnlyWithAProof) {
   EXPECT_GT(searched_off, 40);
 }
 
+TEST(NearestStructure, TheSearchWeighsAPoseAsThePoseWithItsClosedForms) {
+  // Manifold::searchDistance may skip the closed-form spin (the angle between the spun axis's two
+  // directions is the least over the spin) but must weigh every θ as poseWithTail's pose, for X
+  // far from the branch and just off it (where the angle is small and a shortcut's rounding
+  // shows).
+  std::mt19937_64 rng(1812);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int branches = 0, shortcut = 0;
+  forEachBranch([&](const Problem& p, const Branch& b) {
+    const Manifold& m = *b.manifold;
+    if (m.closedFormParams() == 0u || detail::allParamsClosedForm(m)) return;
+    ++branches;
+    bool differs = false;
+    for (int k = 0; k < 60; ++k) {
+      Isometry3d X = p.mobile.pose;
+      if (k % 2 == 1) {  // a pose of the branch moved by up to 1e-3 (rad and length)
+        X = m.pose(sampleParameters(m, referenceParams(m), 1.0, rng));
+        const Vector3d w(unit(rng), unit(rng), unit(rng));
+        X.linear() = X.linear() * Eigen::AngleAxisd(1e-3 * unit(rng), w.normalized()).matrix();
+        X.translation() += 1e-3 * Vector3d(unit(rng), unit(rng), unit(rng));
+      }
+      Params fast_t = sampleParameters(m, referenceParams(m), 1.0, rng), full_t = fast_t;
+      const double fast = m.searchDistance(X, &fast_t);
+      const double full = poseDistance(m.poseWithTail(X, &full_t), X);
+      ASSERT_NEAR(fast, full, 1e-9 * (1.0 + full)) << p.name << " " << m.describe();
+      differs = differs || fast != full;
+    }
+    shortcut += differs;
+  });
+  EXPECT_GT(branches, 40);
+  EXPECT_GT(shortcut, 20);  // branches that took a shortcut (the default is bit for bit)
+}
+
 TEST(NearestStructure, OneSearchedAngleIsNoFartherThanADenseScan) {
   // Branches whose only searched parameter is an angle (a cylinder grasp's turn about the axis):
   // the nearest pose is at least as near as the best of 1440 angles across the range, each with
