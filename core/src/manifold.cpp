@@ -179,20 +179,28 @@ bool searchFromProjection(const Manifold& m, const Isometry3d& X, const Paramete
   for (int i = 0; i < n; ++i)
     if (par[i].kind == ParamKind::kAngle && n_angles < 3 && !(fixed & (1u << i)))
       angles[n_angles++] = i;
-  constexpr int kGrid = 4;
+  // Four values an angle, or only the two ends of a bounded one narrower than half a radian (a
+  // torch's tilt range: the pattern search's first steps, a quarter, span it already).
+  int values[kMaxDof];
+  int combos = 1;
+  for (int k = 0; k < n_angles; ++k) {
+    const Parameter& p = par[angles[k]];
+    const bool wraps = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
+    values[k] = !wraps && p.max - p.min < 0.5 ? 2 : 4;
+    combos *= values[k];
+  }
   Params grid_best = proj;
   double grid_d = std::numeric_limits<double>::infinity();
-  int combos = 1;
-  for (int k = 0; k < n_angles; ++k) combos *= kGrid;
   for (int c = 1; c < combos; ++c) {  // c = 0 is the projection itself
     Params t = proj;
-    for (int k = 0, code = c; k < n_angles; ++k, code /= kGrid) {
+    for (int k = 0, code = c; k < n_angles; code /= values[k], ++k) {
       const Parameter& p = par[angles[k]];
+      const int g = values[k];
       // Periodic or unbounded (a screw's turn): quarter turns from the projection; bounded:
       // evenly over the bounds.
       const bool wraps = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
-      t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % kGrid) / kGrid
-                           : p.min + (p.max - p.min) * (code % kGrid) / (kGrid - 1);
+      t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % g) / g
+                           : p.min + (p.max - p.min) * (code % g) / (g - 1);
     }
     const double d = distanceWithTail(m, X, fixed, &t);
     if (d < grid_d) grid_d = d, grid_best = t;
