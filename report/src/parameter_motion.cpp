@@ -63,10 +63,17 @@ bool stepAround(const Manifold& m, const Params& at, int i, double step, Params*
   return (*b)[i] - (*a)[i] > 0.5 * h;
 }
 
+ParameterMotion motionAlong(const Manifold& m, const Params& at, const Vector3d& origin, int i,
+                            double step, double scale) {
+  Params a, b;
+  if (!stepAround(m, at, i, step, &a, &b)) return ParameterMotion();  // pinned by its bounds
+  return screwBetween(m.pose(a), m.pose(b), b[i] - a[i], origin, scale);
+}
+
 ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale) {
   Params a, b;
   if (!stepAround(m, at, i, step, &a, &b)) return ParameterMotion();  // pinned by its bounds
-  return screwBetween(m.pose(a), m.pose(b), b[i] - a[i], m.pose(at).translation(), scale);
+  return motionAlong(m, at, m.pose(at).translation(), i, step, scale);
 }
 
 namespace {
@@ -104,7 +111,7 @@ int rangeConstraint(const Problem& problem, const Branch& branch, const Paramete
 void parameterMotions(const Problem& problem, const Branch& branch, const Params& at,
                       std::array<ParameterMotion, kMaxDof>& out) {
   const Manifold& m = *branch.manifold;
-  m.pose(at);  // a throw at the nearest pose itself is let through
+  const Vector3d origin = m.pose(at).translation();  // a throw at the nearest pose is let through
   const double scale = std::max(1.0, problem.lengthScale());
   for (int i = 0; i < m.dof(); ++i) {
     ParameterMotion& mo = out[static_cast<std::size_t>(i)];
@@ -112,7 +119,7 @@ void parameterMotions(const Problem& problem, const Branch& branch, const Params
     // A plugin's pose function that throws beside the nearest pose leaves the motion unknown;
     // the stage that needs those poses (samples, the collision filter) reports it.
     try {
-      found = motionAlong(m, at, i, 1e-4, scale);
+      found = motionAlong(m, at, origin, i, 1e-4, scale);
     } catch (const std::exception&) {
       found.type = ParameterMotion::Type::kUnknown;
     }

@@ -32,5 +32,9 @@ bool stepAround(const Manifold& m, const Params& at, int i, double step, Params*
 // instantaneous motion to about 1e-8), and exactly the parameter's screw whatever the step when
 // the parameter turns about a fixed line or slides along a fixed direction.
 ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale);
+// The same with the axis point reported nearest `origin` (motionAlong's: the pose at `at`'s
+// origin, which a caller asking for every parameter computes once).
+ParameterMotion motionAlong(const Manifold& m, const Params& at, const Vector3d& origin, int i,
+                            double step, double scale);
 
 }  // namespace relpos::detail
