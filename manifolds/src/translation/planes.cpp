@@ -129,8 +129,8 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
   bool orthogonal = true;
   for (int i = 0; i < rows.k && orthogonal; ++i)
     for (int j = 0; j < i && orthogonal; ++j)
-      orthogonal = std::abs(rows.n[i].dot(rows.n[j])) <=
-                   1e-12 * rows.n[i].norm() * rows.n[j].norm();
+      orthogonal =
+          std::abs(rows.n[i].dot(rows.n[j])) <= 1e-12 * rows.n[i].norm() * rows.n[j].norm();
   if (orthogonal) {
     Vector3d x = T;
     for (int i = 0; i < rows.k; ++i) {
@@ -174,7 +174,29 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
 
 }  // namespace
 
-int Planes::planeRows() const { return planeRowsFor(linear, Matrix3d::Identity()).k; }
+// planeRowsFor's count without its geometry (dof() and parameter() ask for it on every call):
+// one row a plane, two a line, three a pinned point, at most three.
+int Planes::planeRows() const {
+  int k = 0;
+  for (const Fundamental& f : linear) {
+    switch (f.kind) {
+      case FundamentalKind::kPointPlane:
+        k += 1;
+        break;
+      case FundamentalKind::kPointLine:
+        k += 2;
+        break;
+      case FundamentalKind::kPointPoint:
+        k += 3;
+        break;
+      case FundamentalKind::kAngle:
+      case FundamentalKind::kLineLine:
+      case FundamentalKind::kCustom:
+        break;
+    }
+  }
+  return std::min(k, 3);
+}
 
 int Planes::rangedPlanes() const {
   int n = 0;
