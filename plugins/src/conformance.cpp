@@ -120,6 +120,14 @@ void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int sa
     const Params n = nearestParams(m, Y);
     if (poseDistance(m.pose(n), Y) > poseDistance(m.pose(m.project(Y)), Y) + 1e-12)
       fail("nearest-not-farther", "nearest is worse than the projection from " + poseText(Y));
+    // The search weighs θ as the pose with its closed forms (Manifold::searchDistance).
+    Params fast = t, full = t;
+    const double weighed = m.searchDistance(Y, &fast);
+    const double d = poseDistance(m.poseWithTail(Y, &full), Y);
+    if (!(std::abs(weighed - d) <= 1e-9 * (1.0 + d)))
+      fail("search-distance", "searchDistance is " + std::to_string(weighed) +
+                                  ", the pose with its closed forms " + std::to_string(d) +
+                                  " from " + poseText(Y));
   }
 }
 

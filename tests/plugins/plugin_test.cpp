@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <link.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -408,6 +409,35 @@ TEST(Conformance, AFailureIsNamedByTheInvariantThatBroke) {
   plugins::checkManifold(ForgetfulSlide(), 3, report, 5);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.failures[0].rfind("[params-round-trip] forgetful slide: ", 0), 0u)
+      << report.text();
+}
+
+// A slide along x that weighs every pose for the search as half its distance: a shortcut
+// (Manifold::searchDistance) that is not the pose's distance.
+class HalfWeighedSlide final : public MixedManifoldBase<HalfWeighedSlide> {
+ public:
+  const char* typeName() const override { return "HalfWeighedSlide"; }
+  int dof() const override { return 1; }
+  Parameter parameter(int) const override { return {"x", ParamKind::kLength, -1.0, 1.0, false}; }
+  Isometry3d pose(const Params& t) const override {
+    Isometry3d X = Isometry3d::Identity();
+    X.translation().x() = t[0];
+    return X;
+  }
+  Params project(const Isometry3d& X) const override {
+    return Params{std::min(1.0, std::max(-1.0, X.translation().x()))};
+  }
+  double searchDistance(const Isometry3d& X, Params* t) const override {
+    return 0.5 * poseDistance(pose(*t), X);
+  }
+  std::string describe() const override { return "half-weighed slide"; }
+};
+
+TEST(Conformance, ASearchDistanceThatIsNotThePosesIsNamed) {
+  plugins::Report report;
+  plugins::checkManifold(HalfWeighedSlide(), 3, report, 5);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.failures[0].rfind("[search-distance] half-weighed slide: ", 0), 0u)
       << report.text();
 }
 

@@ -35,7 +35,8 @@ Params sampleParams(const Manifold& m, std::mt19937_64& rng, double window = 3.0
 // The manifold suite, by invariant: dof-in-range, dof-split (rotational + translational = dof),
 // parameter-named, parameter-bounds (min <= max), periodic-is-angle, pose-rigid,
 // project-in-bounds, params-round-trip (pose(project(X)) = X on the manifold),
-// contains-on-manifold, nearest-not-farther (than the projection).
+// contains-on-manifold, nearest-not-farther (than the projection), search-distance
+// (searchDistance weighs θ as poseWithTail's pose).
 void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int samples = 40);
 
 // Every pose sampled from the synthesised `output` set satisfies both inputs a and b. Returns false
