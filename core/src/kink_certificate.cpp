@@ -38,7 +38,7 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     const double tn = here.t.norm();
     const Step g = tn > 0.0 ? Step(Jt.transpose() * (here.t / tn)) : Step(Step::Zero(k));
     Step gn(k), Gg(k);  // δ₀ and (J_rᵀJ_r)⁻¹ g
-    double q;
+    double q = 0.0;
     if (k == 1) {  // one searched angle (the common case): σ = ‖J_r‖, no decomposition
       const double sigma = Jr.col(0).norm();
       if (!(sigma > 1e-6)) return false;  // not injective
