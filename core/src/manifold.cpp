@@ -179,14 +179,16 @@ bool searchFromProjection(const Manifold& m, const Isometry3d& X, const Paramete
   for (int i = 0; i < n; ++i)
     if (par[i].kind == ParamKind::kAngle && n_angles < 3 && !(fixed & (1u << i)))
       angles[n_angles++] = i;
-  // Four values an angle, or only the two ends of a bounded one narrower than half a radian (a
-  // torch's tilt range: the pattern search's first steps, a quarter, span it already).
+  // Periodic or unbounded (a screw's turn): quarter turns from the projection; bounded: four
+  // values evenly over the bounds, or only its two ends where it is narrower than half a radian
+  // (a torch's tilt range: the pattern search's first steps, a quarter, span it already).
+  bool wraps[kMaxDof];
   int values[kMaxDof];
   int combos = 1;
   for (int k = 0; k < n_angles; ++k) {
     const Parameter& p = par[angles[k]];
-    const bool wraps = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
-    values[k] = !wraps && p.max - p.min < 0.5 ? 2 : 4;
+    wraps[k] = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
+    values[k] = !wraps[k] && p.max - p.min < 0.5 ? 2 : 4;
     combos *= values[k];
   }
   Params grid_best = proj;
@@ -196,11 +198,8 @@ bool searchFromProjection(const Manifold& m, const Isometry3d& X, const Paramete
     for (int k = 0, code = c; k < n_angles; code /= values[k], ++k) {
       const Parameter& p = par[angles[k]];
       const int g = values[k];
-      // Periodic or unbounded (a screw's turn): quarter turns from the projection; bounded:
-      // evenly over the bounds.
-      const bool wraps = p.periodic || !std::isfinite(p.min) || !std::isfinite(p.max);
-      t[angles[k]] = wraps ? t[angles[k]] + 2 * kPi * (code % g) / g
-                           : p.min + (p.max - p.min) * (code % g) / (g - 1);
+      t[angles[k]] = wraps[k] ? t[angles[k]] + 2 * kPi * (code % g) / g
+                              : p.min + (p.max - p.min) * (code % g) / (g - 1);
     }
     const double d = distanceWithTail(m, X, fixed, &t);
     if (d < grid_d) grid_d = d, grid_best = t;

@@ -68,7 +68,7 @@ Isometry3d SeparableManifold::poseWithTail(const Isometry3d& X, Params* theta) c
 }
 
 double SeparableManifold::searchDistance(const Isometry3d& X, Params* theta) const {
-  if (spin_index_ < 0 || !full_spin_) return poseDistance(poseWithTail(X, theta), X);
+  if (!full_spin_) return poseDistance(poseWithTail(X, theta), X);
   // The rotations P R(u_m, θ) are those taking u_m to P u_m. A rotation by an angle moves no
   // vector farther than that angle, and the least turn taking X u_m onto P u_m is one of them:
   // the least angle from X over the spin is the angle between X u_m and P u_m.

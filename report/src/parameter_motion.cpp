@@ -70,12 +70,6 @@ ParameterMotion motionAlong(const Manifold& m, const Params& at, const Vector3d&
   return screwBetween(m.pose(a), m.pose(b), b[i] - a[i], origin, scale);
 }
 
-ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale) {
-  Params a, b;
-  if (!stepAround(m, at, i, step, &a, &b)) return ParameterMotion();  // pinned by its bounds
-  return motionAlong(m, at, m.pose(at).translation(), i, step, scale);
-}
-
 namespace {
 
 // The ranged input constraint among the branch's sources whose range parameter this is: a

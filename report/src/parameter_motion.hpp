@@ -30,10 +30,9 @@ bool stepAround(const Manifold& m, const Params& at, int i, double step, Params*
 // The motion of parameter i of m about `at`, between the poses `step` (relative; at most a quarter
 // of a bounded range) to either side within its bounds: what the report writes (step 1e-4: the
 // instantaneous motion to about 1e-8), and exactly the parameter's screw whatever the step when
-// the parameter turns about a fixed line or slides along a fixed direction.
-ParameterMotion motionAlong(const Manifold& m, const Params& at, int i, double step, double scale);
-// The same with the axis point reported nearest `origin` (motionAlong's: the pose at `at`'s
-// origin, which a caller asking for every parameter computes once).
+// the parameter turns about a fixed line or slides along a fixed direction. A turn's axis point
+// is the one nearest `origin` (the pose at `at`'s origin, which the caller has computed once for
+// every parameter).
 ParameterMotion motionAlong(const Manifold& m, const Params& at, const Vector3d& origin, int i,
                             double step, double scale);
 

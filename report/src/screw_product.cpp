@@ -110,7 +110,7 @@ Vector3d pivotOf(const Manifold& m, const Params& at, const Isometry3d& X_at, do
   Vector3d b = Vector3d::Zero();
   std::vector<std::pair<Vector3d, Vector3d>> lines;
   for (int i = 0; i < m.dof(); ++i) {
-    const ParameterMotion mo = detail::motionAlong(m, at, i, 0.05, scale);
+    const ParameterMotion mo = detail::motionAlong(m, at, X_at.translation(), i, 0.05, scale);
     if (mo.type == ParameterMotion::Type::kTranslation || mo.type == ParameterMotion::Type::kNone)
       continue;
     if (mo.type != ParameterMotion::Type::kRotation) return Vector3d::Zero();
@@ -204,7 +204,7 @@ std::optional<std::vector<ScrewFactor>> screwProduct(const Problem& problem, con
     const Parameter p = m.parameter(i);
     // A wide step: for a fixed screw the motion between the two poses is exact (less rounding
     // than a small one); for anything else the check below fails.
-    const ParameterMotion mo = detail::motionAlong(m, at, i, 0.05, scale);
+    const ParameterMotion mo = detail::motionAlong(m, at, X_at.translation(), i, 0.05, scale);
     const bool usable = mo.type == ParameterMotion::Type::kRotation ||
                         mo.type == ParameterMotion::Type::kTranslation ||
                         (screws && mo.type == ParameterMotion::Type::kScrew);

@@ -389,10 +389,10 @@ TEST(BadPlugins, AWrongLayoutFingerprint) {
                     "): the same version built from headers with other shared layouts");
 }
 
-// A slide along x whose project() forgets where it was (always 0): the kit names the invariant.
-class ForgetfulSlide final : public MixedManifoldBase<ForgetfulSlide> {
+// A slide along x over [-1, 1]: what the broken manifolds below get wrong is their own.
+template <typename Derived>
+class SlideAlongX : public MixedManifoldBase<Derived> {
  public:
-  const char* typeName() const override { return "ForgetfulSlide"; }
   int dof() const override { return 1; }
   Parameter parameter(int) const override { return {"x", ParamKind::kLength, -1.0, 1.0, false}; }
   Isometry3d pose(const Params& t) const override {
@@ -400,6 +400,12 @@ class ForgetfulSlide final : public MixedManifoldBase<ForgetfulSlide> {
     X.translation().x() = t[0];
     return X;
   }
+};
+
+// A slide whose project() forgets where it was (always 0): the kit names the invariant.
+class ForgetfulSlide final : public SlideAlongX<ForgetfulSlide> {
+ public:
+  const char* typeName() const override { return "ForgetfulSlide"; }
   Params project(const Isometry3d&) const override { return Params{}; }
   std::string describe() const override { return "forgetful slide"; }
 };
@@ -412,18 +418,11 @@ TEST(Conformance, AFailureIsNamedByTheInvariantThatBroke) {
       << report.text();
 }
 
-// A slide along x that weighs every pose for the search as half its distance: a shortcut
+// A slide that weighs every pose for the search as half its distance: a shortcut
 // (Manifold::searchDistance) that is not the pose's distance.
-class HalfWeighedSlide final : public MixedManifoldBase<HalfWeighedSlide> {
+class HalfWeighedSlide final : public SlideAlongX<HalfWeighedSlide> {
  public:
   const char* typeName() const override { return "HalfWeighedSlide"; }
-  int dof() const override { return 1; }
-  Parameter parameter(int) const override { return {"x", ParamKind::kLength, -1.0, 1.0, false}; }
-  Isometry3d pose(const Params& t) const override {
-    Isometry3d X = Isometry3d::Identity();
-    X.translation().x() = t[0];
-    return X;
-  }
   Params project(const Isometry3d& X) const override {
     return Params{std::min(1.0, std::max(-1.0, X.translation().x()))};
   }

@@ -45,7 +45,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   int dof_ = 0;  // kept: a translation part of planes counts its rows to know it
   unsigned closed_form_ = 0u;
   int spin_index_ = -1;     // the spin θ (RotationPart::spinAxis) when closed form, else −1
-  bool full_spin_ = false;  // … and a full turn (not an arc)
+  bool full_spin_ = false;  // a closed-form spin over a full turn (not an arc)
 };
 // Stored inline in a Branch (ManifoldHolder): the largest shapes of the two variants together.
 static_assert(sizeof(SeparableManifold) <= kManifoldStorage, "separable manifold too large");
