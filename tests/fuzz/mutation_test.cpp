@@ -11,6 +11,7 @@
 
 #include "cli_checks.hpp"
 #include "mutator.hpp"
+#include "slow_tests.hpp"
 #include "test_config.hpp"
 
 namespace relpos::fuzz {
@@ -19,8 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uint64_t kSeed = 20240613;
-constexpr int kBatchLines = 10000;  // in two batch processes
-constexpr int kSolveCalls = 300;
+// A quarter under sanitizers (sweepCount): there each relpos process takes 0.2 s to start.
+constexpr int kBatchLines = test::sweepCount(10000);  // in two batch processes
+constexpr int kSolveCalls = test::sweepCount(300);
 
 fs::path scratch(const std::string& name) {
   const fs::path d = fs::temp_directory_path() /

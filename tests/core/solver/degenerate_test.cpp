@@ -22,9 +22,10 @@
 #include "failure_log.hpp"
 #include "result_checker.hpp"
 #include "seed_offset.hpp"
+#include "slow_tests.hpp"
 #include "solve_helpers.hpp"
-#include "test_fallback.hpp"
 #include "spec_writer.hpp"
+#include "test_fallback.hpp"
 
 namespace relpos::test {
 namespace {
@@ -40,7 +41,7 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
   FailureLog log;
   for (double level : f.levels) {
     const std::string group = f.name + ", " + levelText(f, level);
-    for (int k = 0; k < f.per_level; ++k) {
+    for (int k = 0; k < sweepCount(f.per_level); ++k) {
       WorldBuilder w(rng);
       f.build(w, level, k);
       Problem p = w.known().problem;

@@ -26,10 +26,11 @@
 #include "relpos/io/spec_reader.hpp"
 #include "result_checker.hpp"
 #include "seed_offset.hpp"
+#include "slow_tests.hpp"
 #include "solve_helpers.hpp"
-#include "test_fallback.hpp"
 #include "spec_writer.hpp"
 #include "test_config.hpp"
+#include "test_fallback.hpp"
 
 namespace relpos::test {
 namespace {
@@ -229,8 +230,9 @@ std::vector<Case> generatedProblems(int size, int count, std::uint64_t seed) {
 }
 
 // 1,500 problems in all: 500 of each size, in tests of 250 (a test takes about 0.5 s in Release
-// and 13 s at most with ASan and UBSan, where the nearest-pose searches cost 15–25 times more).
-constexpr int kPerTest = 250, kTestsPerSize = 2;
+// and 13 s at most with ASan and UBSan, where the nearest-pose searches cost 15–25 times more:
+// there a quarter, sweepCount).
+constexpr int kPerTest = sweepCount(250), kTestsPerSize = 2;
 
 class GeneratedInvariance : public ::testing::TestWithParam<std::tuple<int, int>> {};
 
