@@ -1,7 +1,9 @@
 #include "kink_certificate.hpp"
 
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "residual_model.hpp"
 
@@ -23,14 +25,26 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
   int idx[kMaxDof];
   const int k = searchedParams(m, idx);
   if (k == 0 || k > kMaxSearched) return false;
+  Linearisation l;
+  double last_step = std::numeric_limits<double>::infinity();
   for (int iter = 0; iter < 8; ++iter) {
     Params at = *best;
-    const Linearisation l = linearise(m, X, par, idx, k, &at);
-    const Residuals& here = l.here;
-    const Jacobian &Jr = l.Jr, &Jt = l.Jt;
-    const bool probe_nearer = l.probe_nearer;
+    const Residuals here = residualsAt(m, X, fixed, &at);
     const double angle = here.r.norm();
-    if (!(angle < 0.5)) return false;  // far from a kink (or NaN): the smooth search's case
+    // Far from a kink (or NaN): the smooth search's case, told before the differences' 2k poses.
+    if (!(angle < 0.5)) return false;
+    // After a step a tenth of the differences' or less (1e-6 in the search's units: the steps onto
+    // a kink ε ≈ 1e-8 off X's rotation, an initial pose written with 8 digits), the Jacobians
+    // have moved by about the step's fraction of them, far inside the test's 1e-3 margin: they
+    // are kept, and only the residuals are new. The probes are then the last ones, within that
+    // step of θ.
+    if (iter > 0 && last_step <= 1e-7) {
+      l.here = here;
+    } else {
+      l = linearise(m, X, par, idx, k, &at, here);
+    }
+    const Jacobian &Jr = l.Jr, &Jt = l.Jt;
+    const bool probe_nearer = l.probe_d < here.d;
     // The model: d(δ) ≈ d + gᵀδ + √(ε² + ‖J_r (δ − δ₀)‖²), with δ₀ = −J_r⁺ r the Gauss–Newton
     // step and ε = ‖r + J_r δ₀‖ the rotation no step can reach (an initial pose written with 8
     // digits misses a reachable rotation by about 1e-8). Convex; where q = gᵀ(J_rᵀJ_r)⁻¹g < 1 its
@@ -67,7 +81,14 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     // the first-order test of the kink.
     if (angle <= 1e-12 || (near && delta.norm() <= 1e-10)) return holds && !probe_nearer;
     Params next = *best;
-    for (int a = 0; a < k; ++a) next[idx[a]] = clampParam(par[idx[a]], next[idx[a]] + delta[a]);
+    last_step = 0.0;
+    for (int a = 0; a < k; ++a) {
+      next[idx[a]] = clampParam(par[idx[a]], next[idx[a]] + delta[a]);
+      last_step = std::max(
+          last_step, std::abs(next[idx[a]] - (*best)[idx[a]]) /
+                         (par[idx[a]].kind == ParamKind::kLength ? 1.0 + std::abs((*best)[idx[a]])
+                                                                 : searchUnit(par[idx[a]])));
+    }
     const double d = distanceWithTail(m, X, fixed, &next);
     if (!(d < *best_d)) return false;
     *best = next;

@@ -3,6 +3,8 @@
 // (kink_certificate.cpp, kink_descent.cpp): the translation's and the rotation's residuals at θ,
 // once its closed-form parameters are set, and their Jacobians in the searched parameters.
 #include <Eigen/Core>
+#include <algorithm>
+#include <limits>
 
 #include "nearest_eval.hpp"
 
@@ -33,15 +35,18 @@ struct Linearisation {
   Residuals here;  // at θ (its closed-form parameters set)
   Jacobian Jt, Jr;
   bool probe_nearer = false;  // a probe of the differences nearer than θ: θ is no minimum
+  double probe_d = std::numeric_limits<double>::infinity();  // the nearest probe's distance
 };
 
 // The residuals at *at and their Jacobians in the k searched parameters idx by central
 // differences (a length's step relative to its size, another's to its search unit). 1 + 2k
 // poses.
+// `here`: the residuals at *at, once residualsAt has set its closed-form parameters (a caller
+// that looks at them first saves the differences where they tell it to stop).
 inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
-                               const int* idx, int k, Params* at) {
+                               const int* idx, int k, const Params* at, const Residuals& here) {
   const unsigned closed_form = m.closedFormParams();
-  Linearisation l{residualsAt(m, X, closed_form, at), Jacobian(3, k), Jacobian(3, k), false};
+  Linearisation l{here, Jacobian(3, k), Jacobian(3, k), false};
   for (int a = 0; a < k; ++a) {
     const Parameter& p = par[idx[a]];
     const double h =
@@ -52,10 +57,17 @@ inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Par
     const Residuals rp = residualsAt(m, X, closed_form, &plus);
     const Residuals rm = residualsAt(m, X, closed_form, &minus);
     l.probe_nearer = l.probe_nearer || rp.d < l.here.d || rm.d < l.here.d;
+    l.probe_d = std::min({l.probe_d, rp.d, rm.d});
     l.Jr.col(a) = (rp.r - rm.r) / (2 * h);
     l.Jt.col(a) = (rp.t - rm.t) / (2 * h);
   }
   return l;
+}
+
+inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
+                               const int* idx, int k, Params* at) {
+  const Residuals here = residualsAt(m, X, m.closedFormParams(), at);
+  return linearise(m, X, par, idx, k, at, here);
 }
 
 }  // namespace relpos::detail

@@ -167,6 +167,25 @@ TEST_P(TranslationShape, ProjectingAPointOfTheSetGivesItsParameters) {
   }
 }
 
+// The search places every pose it weighs with projectAndPlace, which a shape may compute its own
+// way (BoundedCylinder takes the azimuth's direction from the point, not from its angle): off the
+// set as on it, the parameters are project()'s and the translation is translation() at them.
+TEST_P(TranslationShape, ProjectAndPlaceIsTheTranslationAtTheProjection) {
+  Rng rng(15);
+  for (int trial = 0; trial < 200; ++trial) {
+    const TranslationPart part = GetParam().make(rng);
+    const Matrix3d R = randomRotation(rng);
+    const Vector3d X = rng.point(3.0);
+    double projected[6] = {}, placed_t[6] = {};
+    part.project(R, X, projected);
+    const Vector3d placed = part.projectAndPlace(R, X, placed_t);
+    for (int i = 0; i < part.dof(); ++i)
+      EXPECT_EQ(placed_t[i], projected[i]) << GetParam().name << " " << trial << " θ" << i;
+    const Vector3d at = part.translation(R, placed_t);
+    EXPECT_LT((placed - at).norm(), 1e-12 * (1.0 + at.norm())) << GetParam().name << " " << trial;
+  }
+}
+
 TEST_P(TranslationShape, AnExactProjectionIsTheNearestPointOfTheSet) {
   Rng rng(13);
   for (int trial = 0; trial < 100; ++trial) {

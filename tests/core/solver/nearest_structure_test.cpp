@@ -386,5 +386,45 @@ TEST(NearestStructure, NoCertificateAwayFromTheKink) {
   EXPECT_GT(tried, 3);
 }
 
+TEST(NearestStructure, ACylinderGraspFromAlongTheAxisIsAsNearAsItsBounds) {
+  // Somani C with the gripper's approach along the can's axis (either way, any spin about it,
+  // anywhere): every pose of the branch has its approach square to the axis, so the rotation
+  // distance is π/2 whatever the approach's azimuth, and the distance is flat in the azimuth
+  // wherever the translation's is (a plateau: over the arc where the tip reaches the grasp
+  // volume, over the whole turn on the axis). The nearest distance is then π/2 plus the least
+  // translation, a bound met: the height into [0.05, 0.1], and the distance from the axis into
+  // the annulus [0.12 − 0.05, 0.12 + 0.05] that the origin sweeps (the tip 0.12 along the
+  // approach, within 0.02–0.05 of the axis).
+  ParseResult r =
+      parseSpecFile(std::string(RELPOS_DATA_DIR) + "/scenarios/scenario-c-cylinder-grasp.json",
+                    builtinRegistry());
+  ASSERT_TRUE(r.problem);
+  Problem p = *r.problem;
+  std::mt19937_64 rng(186);
+  std::uniform_real_distribution<double> coordinate(-0.3, 0.3), turn(-kPi, kPi);
+  int plateaus = 0;
+  for (int k = 0; k < 200; ++k) {
+    Isometry3d X = Isometry3d::Identity();
+    X.linear() = axisAngle(Vector3d::UnitZ(), turn(rng));
+    if (k % 2 == 1) X.linear() = X.linear() * axisAngle(Vector3d::UnitX(), kPi);  // approach −z
+    X.translation() = Vector3d(coordinate(rng), coordinate(rng), coordinate(rng));
+    if (k < 2) X.translation() = Vector3d(0.0, 0.0, 0.2);   // on the axis: flat over the turn
+    if (k == 2) X.translation() = Vector3d(0.1, 0.0, 0.2);  // the scenario's own
+    p.mobile.pose = X;
+    const Solution s = solve(p, builtinRegistry());
+    ASSERT_EQ(s.status, Status::kSolved);
+    ASSERT_EQ(s.branches.size(), 1u);
+    const Vector3d t = X.translation();
+    const double rho = t.head<2>().norm();
+    const double dz = std::max({0.0, 0.05 - t.z(), t.z() - 0.1});
+    const double dr = std::max({0.0, 0.07 - rho, rho - 0.17});
+    plateaus += dr == 0.0;
+    const NearestPose n = nearestOnBranch(s.branches[0], X);
+    EXPECT_NEAR(n.distance, kPi / 2 + std::hypot(dz, dr), 1e-9) << k << " at " << t.transpose();
+    EXPECT_NEAR(poseDistance(s.branches[0].manifold->pose(n.parameters), X), n.distance, 1e-12);
+  }
+  EXPECT_GT(plateaus, 20);
+}
+
 }  // namespace
 }  // namespace relpos::test

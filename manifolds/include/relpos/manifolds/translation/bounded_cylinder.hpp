@@ -23,6 +23,8 @@ struct BoundedCylinder : ShapeBase<BoundedCylinder> {
   Parameter parameter(int i) const;
   Vector3d translation(const Matrix3d& R, const double* t) const;
   void project(const Matrix3d& R, const Vector3d& T, double* t) const;
+  // project(), then translation(R, t), the shapes placed once (the search does both per pose).
+  Vector3d projectAndPlace(const Matrix3d& R, const Vector3d& T, double* t) const;
   // Square cuts only: an oblique cut's radius and height are clamped along directions that are
   // not orthogonal. (Line and plane are on the same object, so this holds for every R.)
   bool projectsExactly() const;
