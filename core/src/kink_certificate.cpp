@@ -38,7 +38,7 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     // have moved by about the step's fraction of them, far inside the test's 1e-3 margin: they
     // are kept, and only the residuals are new. The probes are then the last ones, within that
     // step of θ.
-    if (iter > 0 && last_step <= 1e-7) {
+    if (iter > 0 && last_step <= 0.1 * kDifferenceStep) {
       l.here = here;
     } else {
       l = linearise(m, X, par, idx, k, &at, here);
@@ -84,10 +84,8 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     last_step = 0.0;
     for (int a = 0; a < k; ++a) {
       next[idx[a]] = clampParam(par[idx[a]], next[idx[a]] + delta[a]);
-      last_step = std::max(
-          last_step, std::abs(next[idx[a]] - (*best)[idx[a]]) /
-                         (par[idx[a]].kind == ParamKind::kLength ? 1.0 + std::abs((*best)[idx[a]])
-                                                                 : searchUnit(par[idx[a]])));
+      const double moved = std::abs(next[idx[a]] - (*best)[idx[a]]);
+      last_step = std::max(last_step, moved / differenceUnit(par[idx[a]], (*best)[idx[a]]));
     }
     const double d = distanceWithTail(m, X, fixed, &next);
     if (!(d < *best_d)) return false;

@@ -38,6 +38,15 @@ struct Linearisation {
   double probe_d = std::numeric_limits<double>::infinity();  // the nearest probe's distance
 };
 
+// The differences' step, in differenceUnit.
+constexpr double kDifferenceStep = 1e-6;
+
+// The unit of the differences' step at θ_i = v: a length's relative to its size, another's the
+// search unit.
+inline double differenceUnit(const Parameter& p, double v) {
+  return p.kind == ParamKind::kLength ? 1.0 + std::abs(v) : searchUnit(p);
+}
+
 // The residuals at *at and their Jacobians in the k searched parameters idx by central
 // differences (a length's step relative to its size, another's to its search unit). 1 + 2k
 // poses.
@@ -49,8 +58,7 @@ inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Par
   Linearisation l{here, Jacobian(3, k), Jacobian(3, k), false};
   for (int a = 0; a < k; ++a) {
     const Parameter& p = par[idx[a]];
-    const double h =
-        1e-6 * (p.kind == ParamKind::kLength ? 1.0 + std::abs((*at)[idx[a]]) : searchUnit(p));
+    const double h = kDifferenceStep * differenceUnit(p, (*at)[idx[a]]);
     Params plus = *at, minus = *at;
     plus[idx[a]] += h;
     minus[idx[a]] -= h;
