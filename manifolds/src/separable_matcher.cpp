@@ -639,6 +639,14 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const Tolerance
       for (int a = 0; a < 3; ++a) N.row(k++) = Vector3d::Unit(a).transpose();
     }
   }
+  // Orthonormal rows (a box's three planes, a seam's two and its ends' range: the common case)
+  // are independent; the SVD (about 5 % of such a solve) is for the others.
+  const Matrix3d gram = N * N.transpose();
+  bool orthonormal = true;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j)
+      orthonormal = orthonormal && std::abs(gram(i, j) - (i == j ? 1.0 : 0.0)) <= 1e-12;
+  if (orthonormal) return true;
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(N.topRows(3));
   const auto sv = svd.singularValues();
   int rank = 0;
