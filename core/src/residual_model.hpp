@@ -48,8 +48,7 @@ inline double differenceUnit(const Parameter& p, double v) {
 }
 
 // The residuals at *at and their Jacobians in the k searched parameters idx by central
-// differences (a length's step relative to its size, another's to its search unit). 1 + 2k
-// poses.
+// differences (a length's step relative to its size, another's to its search unit): 2k poses.
 // `here`: the residuals at *at, once residualsAt has set its closed-form parameters (a caller
 // that looks at them first saves the differences where they tell it to stop).
 inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
@@ -72,6 +71,7 @@ inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Par
   return l;
 }
 
+// The same from *at alone (its closed-form parameters set in it): 1 + 2k poses.
 inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
                                const int* idx, int k, Params* at) {
   const Residuals here = residualsAt(m, X, m.closedFormParams(), at);
