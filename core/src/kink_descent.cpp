@@ -81,7 +81,7 @@ bool descendOnDistanceModel(const Manifold& m, const Isometry3d& X, const Parame
     const auto& sigma = svd.singularValues();
     if (!(sigma[k - 1] > 1e-6 * std::max(1.0, sigma[0]))) return false;
     Step delta = normSumMinimum(l.Jt, l.here.t, l.Jr, l.here.r);
-    if (delta.norm() <= 1e-10) return !l.probe_nearer;
+    if (delta.norm() <= 1e-10) return !(l.probe_d < l.here.d);
     bool lowered = false;
     for (int cut = 0; cut < 3 && !lowered; ++cut, delta *= 0.25) {
       Params next = *best;

@@ -34,8 +34,8 @@ inline Residuals residualsAt(const Manifold& m, const Isometry3d& X, unsigned cl
 struct Linearisation {
   Residuals here;  // at θ (its closed-form parameters set)
   Jacobian Jt, Jr;
-  bool probe_nearer = false;  // a probe of the differences nearer than θ: θ is no minimum
-  double probe_d = std::numeric_limits<double>::infinity();  // the nearest probe's distance
+  // The nearest probe's distance: below here.d, θ is no minimum.
+  double probe_d = std::numeric_limits<double>::infinity();
 };
 
 // The differences' step, in differenceUnit.
@@ -54,7 +54,7 @@ inline double differenceUnit(const Parameter& p, double v) {
 inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Parameter* par,
                                const int* idx, int k, const Params* at, const Residuals& here) {
   const unsigned closed_form = m.closedFormParams();
-  Linearisation l{here, Jacobian(3, k), Jacobian(3, k), false};
+  Linearisation l{here, Jacobian(3, k), Jacobian(3, k)};
   for (int a = 0; a < k; ++a) {
     const Parameter& p = par[idx[a]];
     const double h = kDifferenceStep * differenceUnit(p, (*at)[idx[a]]);
@@ -63,7 +63,6 @@ inline Linearisation linearise(const Manifold& m, const Isometry3d& X, const Par
     minus[idx[a]] -= h;
     const Residuals rp = residualsAt(m, X, closed_form, &plus);
     const Residuals rm = residualsAt(m, X, closed_form, &minus);
-    l.probe_nearer = l.probe_nearer || rp.d < l.here.d || rm.d < l.here.d;
     l.probe_d = std::min({l.probe_d, rp.d, rm.d});
     l.Jr.col(a) = (rp.r - rm.r) / (2 * h);
     l.Jt.col(a) = (rp.t - rm.t) / (2 * h);

@@ -25,9 +25,9 @@ struct Placed {
   Vector3d pc, pn, e2;
 };
 
-Placed placeFor(const Fundamental& cylinder, const Fundamental& plane, const Matrix3d& R) {
-  Placed p{shapeOf(cylinder, R), Vector3d(), Vector3d(), Vector3d()};
-  planeOf(plane, R, &p.pc, &p.pn);
+Placed placeFor(const BoundedCylinder& b, const Matrix3d& R) {
+  Placed p{shapeOf(b.cylinder, R), Vector3d(), Vector3d(), Vector3d()};
+  planeOf(b.plane, R, &p.pc, &p.pn);
   p.e2 = p.cyl.d.cross(p.cyl.e1);
   return p;
 }
@@ -69,18 +69,18 @@ void projectOnto(const BoundedCylinder& b, const Placed& at, const Vector3d& T, 
 }  // namespace
 
 Vector3d BoundedCylinder::translation(const Matrix3d& R, const double* t) const {
-  const Placed at = placeFor(cylinder, plane, R);
+  const Placed at = placeFor(*this, R);
   const double r = cylinder.exact() ? cylinder.value() : t[1];
   return placeAt(*this, at, std::cos(t[0]) * at.cyl.e1 + std::sin(t[0]) * at.e2, r, t);
 }
 
 void BoundedCylinder::project(const Matrix3d& R, const Vector3d& T, double* t) const {
   Vector3d u;
-  projectOnto(*this, placeFor(cylinder, plane, R), T, t, &u);
+  projectOnto(*this, placeFor(*this, R), T, t, &u);
 }
 
 Vector3d BoundedCylinder::projectAndPlace(const Matrix3d& R, const Vector3d& T, double* t) const {
-  const Placed at = placeFor(cylinder, plane, R);
+  const Placed at = placeFor(*this, R);
   Vector3d u;
   projectOnto(*this, at, T, t, &u);
   return placeAt(*this, at, u, cylinder.exact() ? cylinder.value() : t[1], t);

@@ -421,7 +421,6 @@ TEST(NearestStructure, ACylinderGraspFromAlongTheAxisIsAsNearAsItsBounds) {
     plateaus += dr == 0.0;
     const NearestPose n = nearestOnBranch(s.branches[0], X);
     EXPECT_NEAR(n.distance, kPi / 2 + std::hypot(dz, dr), 1e-9) << k << " at " << t.transpose();
-    EXPECT_NEAR(poseDistance(s.branches[0].manifold->pose(n.parameters), X), n.distance, 1e-12);
   }
   EXPECT_GT(plateaus, 20);
 }
