@@ -3,7 +3,8 @@
 # under ASan and UBSan) with clang in a build directory of its own, makes its seed corpus from
 # data/, and fuzzes for a bounded time. Exit non-zero on any crash, leak, timeout (an input
 # slower than a second) or broken invariant; the input that did it is kept and its path printed.
-# Usage: scripts/run_fuzz.sh [SECONDS] (default 60). Environment: BUILD_DIR (build-fuzz), WERROR.
+# Usage: scripts/run_fuzz.sh [SECONDS] (default 60). Environment: BUILD_DIR (build-fuzz), WERROR,
+# UNITY (ON/OFF, default OFF: as scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -24,7 +25,8 @@ fi
 
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 CC=clang-14 CXX=clang++-14 cmake -S . -B "$BUILD_DIR" -DRELPOS_FUZZ=ON \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRELPOS_WERROR="${WERROR:-OFF}" >/dev/null
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRELPOS_WERROR="${WERROR:-OFF}" \
+  -DCMAKE_UNITY_BUILD="${UNITY:-OFF}" >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)" --target relpos_spec_fuzzer
 cmake --build "$BUILD_DIR" --target relpos_fuzz_corpus
 

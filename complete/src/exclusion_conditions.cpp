@@ -7,8 +7,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 double squareOf(double x) { return x * x; }
 
 // The rounding of the normalised data (a few operations on numbers ~1): every range is widened

@@ -6,11 +6,6 @@
 #include <limits>
 
 namespace relpos::complete::detail {
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-}  // namespace
 
 // The slabs the conditions give the translation t (x = R p + t, |R p| = |p|).
 std::vector<Slab> translationSlabs(const std::vector<Condition>& cs) {

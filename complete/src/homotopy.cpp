@@ -9,13 +9,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-double normInf(const CVec& x) {
-  double m = 0.0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
-  return m;
-}
-
 bool finite(const CVec& x) {
   for (Eigen::Index i = 0; i < x.size(); ++i)
     if (!std::isfinite(x[i].real()) || !std::isfinite(x[i].imag())) return false;

@@ -30,13 +30,6 @@ bool finiteMatrix(const CMat& m) {
   return true;
 }
 
-double normInf(const CVec& x) {
-  double m = 0.0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
-  return m;
-}
-
 // Whether the interval [lo, hi] + [−s, s] lies in (−r, r); upward rounding is active, so the
 // sums are upper bounds of the exact ones.
 bool inside(const FI& a, double s, double r) { return a.upper() + s < r && -a.lower() + s < r; }

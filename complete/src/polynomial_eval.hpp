@@ -4,6 +4,8 @@
 // the shape, and every monomial its partial derivatives need, is a node of one product tree
 // (node = parent · x_var), evaluated once per point and shared by all equations.
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -17,6 +19,15 @@ using CMat =
     Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxVariables, kMaxVariables>;
 using RVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxVariables, 1>;
 using RMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxVariables, kMaxVariables>;
+
+// The largest of a complex vector's real and imaginary parts, in magnitude (the tracker's and the
+// certifier's scale of a point).
+inline double normInf(const CVec& x) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
+  return m;
+}
 
 // Complex product without the C99 NaN recovery of std::complex's operator* (a library call in
 // GCC without -ffast-math): the tracker multiplies finite numbers, and a NaN fails its checks.

@@ -8,7 +8,6 @@
 namespace relpos::complete::detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // An exact angle this close to 0 or π is a parallelism (its cosine would be singular there).
 constexpr double kParallelAngle = 1e-9;
 

@@ -13,6 +13,7 @@
 // forward_dual.hpp, the interval type): the rotation as the rational map of the quaternion
 // (1, a, b, c) and the translation, six coordinates y = (a, b, c, t) about a base pose.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@
 #include "relpos/core/registry.hpp"
 
 namespace relpos::complete::detail {
+
+// What the conditions' and the exclusion's open bounds are.
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 enum class ConditionKind : unsigned char {
   kPointPoint,  // |x − q|², x = R p + t the mobile point

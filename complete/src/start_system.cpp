@@ -36,13 +36,6 @@ constexpr int kStaleLoops = 8;
 constexpr int kStaleAfterGraph = 3;
 constexpr int kMaxLoops = 400;
 
-double normInf(const CVec& x) {
-  double m = 0.0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
-  return m;
-}
-
 // The certified roots of the start member found so far.
 class RootSet {
  public:
@@ -60,7 +53,7 @@ class RootSet {
     for (std::size_t i = 0; i < roots_.size(); ++i) {
       if (!detail::boxesOverlap(roots_[i], radii_[i], c.x, c.radius)) continue;
       // One root only if a box holding both boxes holds one root.
-      const double d = normInf(roots_[i] - c.x) + radii_[i] + c.radius;
+      const double d = detail::normInf(roots_[i] - c.x) + radii_[i] + c.radius;
       if (certifier_.testComplex(roots_[i], 1.01 * d) || certifier_.testComplex(roots_[i], 10 * d))
         return false;
     }

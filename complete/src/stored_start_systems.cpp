@@ -56,13 +56,6 @@ bool readComplexLine(std::istringstream& in, int count, Complex* out) {
   return *p == '\0';
 }
 
-double normInf(const CVec& x) {
-  double m = 0.0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
-  return m;
-}
-
 }  // namespace
 
 std::string formatStoredStartSystem(const StoredStartSystem& s) {

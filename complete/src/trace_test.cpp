@@ -79,13 +79,6 @@ class SliceFamily final : public Family {
   std::vector<Complex> fixed_;
 };
 
-double normInf(const CVec& x) {
-  double m = 0.0;
-  for (Eigen::Index i = 0; i < x.size(); ++i)
-    m = std::max(m, std::max(std::abs(x[i].real()), std::abs(x[i].imag())));
-  return m;
-}
-
 // Endpoints (with status) of the paths from `starts` at q0 to q1 along the arc γ.
 std::vector<PathEnd> track(const Family& f, const CompiledShape& shape,
                            const std::vector<Complex>& q0, const std::vector<Complex>& q1,
