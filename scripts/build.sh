@@ -3,7 +3,7 @@
 # SANITIZE (e.g. address,undefined), WERROR (ON/OFF), OPT_FLAGS (the build type's compiler flags,
 # e.g. "-O1 -g1 -DNDEBUG"; default CMake's), BENCH (ON/OFF: the Google Benchmark programs), UNITY
 # (ON/OFF, default OFF: the libraries compiled as unity sources, a few files in one compiler run;
-# faster from cold, as CI builds, slower to rebuild after an edit).
+# faster from cold, as CI's sanitizer and fuzz builds are; slower to rebuild after an edit).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 "$(dirname "$0")/install_deps.sh"

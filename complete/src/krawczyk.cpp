@@ -1,7 +1,6 @@
 #include "krawczyk.hpp"
 
 #include <Eigen/LU>
-#include <algorithm>
 #include <cmath>
 
 #include "rounded_interval.hpp"
