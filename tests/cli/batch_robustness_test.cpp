@@ -12,8 +12,6 @@
 namespace relpos::test {
 namespace {
 
-const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
-const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
 const std::string kReplacementCharacter = "\xEF\xBF\xBD";  // U+FFFD
 
 TEST(CliBatchRobustness, MalformedLinesWithAnyBytesAreInvalidLines) {

@@ -22,8 +22,6 @@ namespace {
 
 using namespace relpos::test;
 
-const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
-
 TEST(Cli, SolveWorkedExample) {
   CmdResult r = run("solve " + kExample + " --samples 3 --seed 5");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -577,8 +575,6 @@ std::vector<nlohmann::json> resultLines(const std::string& text) {
   }
   return lines;
 }
-
-const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
 
 TEST(CliBatch, OrderAndResultsDoNotDependOnTheThreadCount) {
   for (const std::string& input : {std::string(RELPOS_DATA_DIR "/examples"), kBatchSample}) {

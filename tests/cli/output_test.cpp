@@ -17,9 +17,6 @@
 namespace relpos::test {
 namespace {
 
-const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
-const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
-
 int lineCount(const std::string& s) {
   return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }

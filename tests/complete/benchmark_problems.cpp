@@ -21,6 +21,12 @@ const std::vector<BenchmarkProblem>& benchmarkProblems() {
   return b;
 }
 
+const BenchmarkProblem& problemNamed(const std::string& file) {
+  for (const BenchmarkProblem& b : benchmarkProblems())
+    if (file == b.file) return b;
+  throw std::runtime_error(file);
+}
+
 Problem loadComplete(const std::string& file) {
   ParseResult r = parseSpecFile(RELPOS_DATA_DIR "/complete/" + file, relpos::builtinRegistry());
   if (!r.problem) throw std::runtime_error("cannot read data/complete/" + file);

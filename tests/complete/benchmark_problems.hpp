@@ -18,6 +18,8 @@ struct BenchmarkProblem {
 };
 
 const std::vector<BenchmarkProblem>& benchmarkProblems();
+// The one whose file is `file` (std::runtime_error when none is).
+const BenchmarkProblem& problemNamed(const std::string& file);
 
 // GoogleTest prints a parameter with this (its file name) instead of its bytes.
 inline void PrintTo(const BenchmarkProblem& b, std::ostream* os) { *os << b.file; }

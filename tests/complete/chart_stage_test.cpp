@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 
+#include "chart_solve.hpp"
 #include "evaluator.hpp"
 #include "local_dof.hpp"
 #include "problem_transforms.hpp"
@@ -23,15 +24,6 @@
 
 namespace relpos::test {
 namespace {
-
-Tolerance toleranceOf(const Problem& p) { return Tolerance::forScale(2.0 * p.lengthScale()); }
-
-Solution solveByCharts(const Problem& p) {
-  Solution s;
-  s.status = Status::kUnhandled;
-  complete::solveSets(p, builtinRegistry(), toleranceOf(p), s);
-  return s;
-}
 
 constexpr int kProblems = 240;
 

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "conflict_search.hpp"
+#include "chart_solve.hpp"
 #include "evaluator.hpp"
 #include "problem_transforms.hpp"
 #include "ranged_problems.hpp"
@@ -21,8 +22,6 @@ namespace relpos::test {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Tolerance toleranceOf(const Problem& p) { return Tolerance::forScale(2.0 * p.lengthScale()); }
 
 bool provenInconsistent(const Problem& p, int boxes) {
   std::vector<complete::detail::ConditionSystem> systems;
@@ -169,13 +168,6 @@ Problem offsetsTooFarApart(Rng& rng, double gap) {
   const double b_lo = lo + width + (a - b).norm() + gap;
   p.constraints.back().min = b_lo, p.constraints.back().max = b_lo + rng.uniform(0.05, 0.5);
   return p;
-}
-
-Solution solveByCharts(const Problem& p) {
-  Solution s;
-  s.status = Status::kUnhandled;
-  complete::solveSets(p, builtinRegistry(), toleranceOf(p), s);
-  return s;
 }
 
 void expectThePairConflicts(Problem (*make)(Rng&, double), std::uint64_t seed) {

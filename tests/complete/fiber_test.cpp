@@ -14,6 +14,9 @@
 namespace relpos::complete {
 namespace {
 
+using testing::conicPoint;
+using testing::twoConics;
+
 bool inBox(const CertifiedRoot& r, const Eigen::VectorXcd& x) {
   for (Eigen::Index i = 0; i < x.size(); ++i)
     if (std::abs(r.x[i].real() - x[i].real()) > r.radius ||
@@ -55,13 +58,6 @@ void expectSame(const FiberResult& a, const FiberResult& b) {
   }
 }
 
-Eigen::VectorXcd point(Complex x, Complex y) {
-  Eigen::VectorXcd v(2);
-  v << x, y;
-  return v;
-}
-
-const testing::ConicFamily kConics;
 const testing::StewartFamily kStewart;
 
 // Two random real conics through (0.75, -1.25): generic, four finite roots.
@@ -77,11 +73,11 @@ TEST(SolveFiber, GenericConicsAreCompleteAndHoldTheKnownRoot) {
       for (int i = 0; i < 5; ++i) s += (p[6 * k + i] = u(rng)) * m[i];
       p[6 * k + 5] = -s;  // exact enough: x, y and the products are dyadic
     }
-    const FiberResult res = solveFiber(kConics, p);
+    const FiberResult res = solveFiber(twoConics(), p);
     EXPECT_EQ(res.root_count, 4);
     EXPECT_TRUE(res.complete) << "trial " << trial;
     EXPECT_EQ(res.roots.size(), 4u);
-    EXPECT_EQ(boxesHolding(res, point(x, y)), 1) << "trial " << trial;
+    EXPECT_EQ(boxesHolding(res, conicPoint(x, y)), 1) << "trial " << trial;
     expectDisjoint(res);
     ASSERT_FALSE(res.roots.empty());
     EXPECT_TRUE(res.roots.front().real);  // real roots sort first
@@ -90,12 +86,12 @@ TEST(SolveFiber, GenericConicsAreCompleteAndHoldTheKnownRoot) {
 
 // Two circles: (1/2, ±√15/2) and two roots at the circular points at infinity.
 TEST(SolveFiber, RootsAtInfinityLeaveTheListIncomplete) {
-  const FiberResult res = solveFiber(kConics, {1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, -3});
+  const FiberResult res = solveFiber(twoConics(), {1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, -3});
   EXPECT_FALSE(res.complete);
   ASSERT_EQ(res.roots.size(), 2u);
   const double y = std::sqrt(15.0) / 2;
-  EXPECT_EQ(boxesHolding(res, point(0.5, y)), 1);
-  EXPECT_EQ(boxesHolding(res, point(0.5, -y)), 1);
+  EXPECT_EQ(boxesHolding(res, conicPoint(0.5, y)), 1);
+  EXPECT_EQ(boxesHolding(res, conicPoint(0.5, -y)), 1);
   EXPECT_TRUE(res.roots[0].real && res.roots[1].real);
   // The two missing paths tracked again, carefully, went to infinity again: no third attempt
   // (another γ sends them there too).
@@ -105,27 +101,27 @@ TEST(SolveFiber, RootsAtInfinityLeaveTheListIncomplete) {
 
 // x² + 4y² = 4 and (x − 3)² + y² = 1: a double root at (2, 0) and (6, ±i√8).
 TEST(SolveFiber, ADoubleRootIsNeverCertifiedNorComplete) {
-  const FiberResult res = solveFiber(kConics, {1, 0, 4, 0, 0, -4, 1, 0, 1, -6, 0, 8});
+  const FiberResult res = solveFiber(twoConics(), {1, 0, 4, 0, 0, -4, 1, 0, 1, -6, 0, 8});
   EXPECT_FALSE(res.complete);
-  EXPECT_EQ(boxesHolding(res, point(2.0, 0.0)), 0);
-  EXPECT_EQ(boxesHolding(res, point(6.0, Complex(0, std::sqrt(8.0)))), 1);
-  EXPECT_EQ(boxesHolding(res, point(6.0, Complex(0, -std::sqrt(8.0)))), 1);
+  EXPECT_EQ(boxesHolding(res, conicPoint(2.0, 0.0)), 0);
+  EXPECT_EQ(boxesHolding(res, conicPoint(6.0, Complex(0, std::sqrt(8.0)))), 1);
+  EXPECT_EQ(boxesHolding(res, conicPoint(6.0, Complex(0, -std::sqrt(8.0)))), 1);
   EXPECT_EQ(res.roots.size(), 2u);
   for (const auto& r : res.roots) EXPECT_FALSE(r.real);
   // Split into two simple roots (radius 1 − 1e-4): all four, complete.
   const double r2 = (1.0 - 1e-4) * (1.0 - 1e-4);
-  const FiberResult split = solveFiber(kConics, {1, 0, 4, 0, 0, -4, 1, 0, 1, -6, 0, 9 - r2});
+  const FiberResult split = solveFiber(twoConics(), {1, 0, 4, 0, 0, -4, 1, 0, 1, -6, 0, 9 - r2});
   EXPECT_TRUE(split.complete);
   EXPECT_EQ(split.roots.size(), 4u);
   expectDisjoint(split);
 }
 
 TEST(SolveFiber, RejectsATargetOfTheWrongSizeOrNotFinite) {
-  EXPECT_FALSE(solveFiber(kConics, {1, 2, 3}).complete);
-  EXPECT_TRUE(solveFiber(kConics, {1, 2, 3}).roots.empty());
+  EXPECT_FALSE(solveFiber(twoConics(), {1, 2, 3}).complete);
+  EXPECT_TRUE(solveFiber(twoConics(), {1, 2, 3}).roots.empty());
   std::vector<double> p(12, 1.0);
   p[3] = std::nan("");
-  EXPECT_FALSE(solveFiber(kConics, p).complete);
+  EXPECT_FALSE(solveFiber(twoConics(), p).complete);
 }
 
 // A 6-6 platform with the pose e = (1, 1, 1, 1)/2 (120° about (1, 1, 1)), g ⊥ e, and dyadic
@@ -213,8 +209,8 @@ TEST(SolveFiber, SameOutputOnEveryRunAndThread) {
   parallel.threads = 3;
   expectSame(first, solveFiber(kStewart, target, parallel));
   const std::vector<double> circles{1, 0, 1, 0, 0, -4, 1, 0, 1, -2, 0, -3};
-  expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles, parallel));
-  expectSame(solveFiber(kConics, circles), solveFiber(kConics, circles));
+  expectSame(solveFiber(twoConics(), circles), solveFiber(twoConics(), circles, parallel));
+  expectSame(solveFiber(twoConics(), circles), solveFiber(twoConics(), circles));
 }
 
 // A random real dense system through a known real point: complete, the point in one box.

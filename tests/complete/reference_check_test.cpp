@@ -35,12 +35,6 @@ std::vector<Isometry3d> dietmaierLiteraturePoses() {
   return out;
 }
 
-const BenchmarkProblem& problemNamed(const std::string& file) {
-  for (const BenchmarkProblem& b : benchmarkProblems())
-    if (file == b.file) return b;
-  throw std::runtime_error(file);
-}
-
 TEST(ReferenceCheck, DietmaierLiteraturePosesHoldEveryLeg) {
   const Problem p = loadComplete("stewart-gough-dietmaier-40.json");
   const std::vector<Isometry3d> poses = dietmaierLiteraturePoses();

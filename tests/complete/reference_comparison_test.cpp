@@ -64,12 +64,6 @@ class LineStabiliser final : public ManifoldBase<LineStabiliser> {
   Vector3d a_, m_;
 };
 
-const BenchmarkProblem& problemNamed(const std::string& file) {
-  for (const BenchmarkProblem& b : benchmarkProblems())
-    if (file == b.file) return b;
-  throw std::runtime_error(file);
-}
-
 Solution fixedPoses(const std::vector<Isometry3d>& poses) {
   Solution s;
   s.status = Status::kSolved;

@@ -2,6 +2,7 @@
 // Families for testing the numeric engine without the constraint encodings: two generic conics
 // in C² (4 roots; two circles meet twice at infinity), and the 6-6 Stewart–Gough point-distance
 // family in Study parameters exactly as the prototype's make_phc.py builds it (40 roots).
+#include <Eigen/Core>
 #include <array>
 #include <string>
 #include <vector>
@@ -27,6 +28,18 @@ class ConicFamily : public Family {
   std::string signature_ = "test:two-conics";
   SystemShape shape_;
 };
+
+// The conic tests' family (made on first use: its terms are another file's static data), and a
+// point (x, y) of C² as they write roots.
+inline const ConicFamily& twoConics() {
+  static const ConicFamily family;
+  return family;
+}
+inline Eigen::VectorXcd conicPoint(Complex x, Complex y) {
+  Eigen::VectorXcd v(2);
+  v << x, y;
+  return v;
+}
 
 // n equations in n unknowns, each with every monomial of degree ≤ d, coefficients = params
 // (equation-major, monomials in shape() order): generic root count d^n (Bézout).

@@ -18,16 +18,13 @@
 #include <string>
 #include <vector>
 
+#include "io_test_helpers.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "test_config.hpp"
 
 namespace relpos::test {
 namespace {
-
-ParseResult parse(const std::string& text) { return parseSpec(text, builtinRegistry(), "t"); }
-
-bool sameDouble(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 std::string all(const std::vector<Diagnostic>& ds) {
   std::string s;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "io_test_helpers.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
 #include "relpos/io/result_writer.hpp"
@@ -58,8 +59,6 @@ json documentTree(const Problem& p, const Solution& s, const ReportOptions& opt)
   writeReport(evaluate(p, s, opt), kResultDocument, text);
   return json::parse(text);
 }
-
-bool sameDouble(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // The value read back is the very double (== would not tell -0.0 from 0.0); null for a
 // non-finite one. A float in the JSON sense, so every reader takes it as a double.

@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "io_test_helpers.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/io/spec_reader.hpp"
 #include "solve_helpers.hpp"
@@ -29,8 +30,6 @@ std::string spec(const std::string& constraints, const char* base = kBase) {
   s.replace(s.find("CONSTRAINTS"), 11, constraints);
   return s;
 }
-
-ParseResult parse(const std::string& text) { return parseSpec(text, builtinRegistry(), "t"); }
 
 // Exactly one error, at `path`, whose message contains `needle`.
 void expectError(const std::string& text, const std::string& path, const std::string& needle) {

@@ -28,7 +28,7 @@ std::vector<ConstraintSet> deferredSets(const ConstraintSet& set, MatchResult* r
   return out;
 }
 
-double worstViolation(const ConstraintSet& set, const Isometry3d& X) {
+double worstSetViolation(const ConstraintSet& set, const Isometry3d& X) {
   double v = 0.0;
   for (const Fundamental& f : set.translational)
     v = std::max(v, violation(f, X.linear(), X.translation()));
@@ -63,11 +63,11 @@ TEST(DerivedSets, ReanchoredSetsHoldWhereTheOriginalDoes) {
       EXPECT_EQ(f.point_side, Side::kMobile);
       EXPECT_TRUE(f.p.isZero(0.0));
     }
-    EXPECT_LT(worstViolation(s, X), 1e-9) << trial;
+    EXPECT_LT(worstSetViolation(s, X), 1e-9) << trial;
     // And not anywhere: moved along the plane's normal by more than its range, it breaks.
     Isometry3d Y = X;
     Y.translation() += 2.0 * n;
-    EXPECT_GT(worstViolation(s, Y), 0.5) << trial;
+    EXPECT_GT(worstSetViolation(s, Y), 0.5) << trial;
   }
 }
 
@@ -89,7 +89,7 @@ TEST(DerivedSets, ALineDistanceSplitsIntoOneSetPerSide) {
     ASSERT_EQ(r, MatchResult::kDeferred);
     ASSERT_EQ(derived.size(), 2u);
     double best = 1e300;
-    for (const ConstraintSet& s : derived) best = std::min(best, worstViolation(s, X));
+    for (const ConstraintSet& s : derived) best = std::min(best, worstSetViolation(s, X));
     EXPECT_LT(best, 1e-8) << trial;  // X is on one side
   }
 }

@@ -16,6 +16,10 @@ namespace relpos::test {
 
 namespace fs = std::filesystem;
 
+// The inputs the CLI tests run most: the worked example and 100 generated grasp and weld lines.
+inline const std::string kExample = RELPOS_DATA_DIR "/examples/pmf-simple-example.json";
+inline const std::string kBatchSample = RELPOS_DATA_DIR "/batch/grasp-and-weld-100.jsonl";
+
 struct CmdResult {
   int code;  // the exit status; -1 when a signal ended the process
   std::string out, err;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "world_feature.hpp"
+
 namespace relpos::test {
 
 WorldBuilder::WorldBuilder(Rng& rng) : rng_(rng), kp_(emptyKnownProblem(rng)) {
@@ -303,11 +305,6 @@ void sphereWithinToleranceOfPlane(WB& w, double f, int k) {
 }
 
 // --- cones and angles ----------------------------------------------------------------------------
-
-// atan2 form of arccos(u·v), as the evaluator computes it.
-double angleOf(const Vector3d& u, const Vector3d& v) {
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
 
 void twoConesApart(WB& w, double gap, int k) {
   Rng& r = w.rng();

@@ -3,26 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "world_feature.hpp"
+
 namespace relpos::test {
 namespace {
 
 using K = FeatureKind;
 
-struct W {  // a feature in world coordinates
-  K kind;
-  Vector3d a, d;
-  double r;
-};
-
-W place(const Feature& f, const Isometry3d& X) {
-  return {f.kind, X * f.point, (X.linear() * f.direction).normalized(), f.radius};
-}
-
-// arccos(u·v) and arcsin(u·v) of SPEC, computed through atan2 so that angles near 0, π and
-// ±π/2 keep full precision (acos(1 − ε) would turn rounding into 1e-8 "violations").
-double angleOf(const Vector3d& u, const Vector3d& v) {
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
+using W = WorldFeature;
 double elevation(const Vector3d& d, const Vector3d& n) {
   return 3.14159265358979323846 / 2 - angleOf(d, n);
 }
@@ -72,7 +60,7 @@ double threadViolation(const InputConstraint& c, const W& F, const W& M, const I
 }  // namespace
 
 double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM) {
-  const W F = place(c.fixed, X_WF), M = place(c.mobile, X_WM);
+  const W F = placeInWorld(c.fixed, X_WF), M = placeInWorld(c.mobile, X_WM);
   const std::string& t = c.type;
   const bool has_point = F.kind == K::kPoint || M.kind == K::kPoint;
   const W& P = M.kind == K::kPoint ? M : F;  // the point, when there is one
@@ -154,7 +142,7 @@ double violation(const InputConstraint& c, const Isometry3d& X_WF, const Isometr
 bool signedResidual(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM,
                     double* residual) {
   if (!c.has_value) return false;
-  const W F = place(c.fixed, X_WF), M = place(c.mobile, X_WM);
+  const W F = placeInWorld(c.fixed, X_WF), M = placeInWorld(c.mobile, X_WM);
   const W& P = M.kind == K::kPoint ? M : F;
   const W& X = M.kind == K::kPoint ? F : M;
   const bool has_point = F.kind == K::kPoint || M.kind == K::kPoint;

@@ -4,27 +4,21 @@
 #include <cmath>
 #include <vector>
 
+#include "world_feature.hpp"
+
 namespace relpos::test {
 namespace {
 
 using K = FeatureKind;
 
-struct W {
-  K kind;
-  Vector3d a, d;
-  double r;
-};
-
-W place(const Feature& f, const Isometry3d& X) {
-  return {f.kind, X * f.point, (X.linear() * f.direction).normalized(), f.radius};
-}
+using W = WorldFeature;
 
 // Smooth residual components of one constraint (zero where it holds). Where a scalar residual
 // would have a vanishing gradient at the solution (a zero distance, a zero angle), the vector
 // form is used instead (p − q, (p − a) × d, d₁ × d₂).
 void residuals(const InputConstraint& c, const Isometry3d& X_WF, const Isometry3d& X_WM,
                std::vector<double>& out) {
-  const W F = place(c.fixed, X_WF), M = place(c.mobile, X_WM);
+  const W F = placeInWorld(c.fixed, X_WF), M = placeInWorld(c.mobile, X_WM);
   const std::string& t = c.type;
   const double v = c.has_value ? c.value : 0.0;
   auto vec = [&](const Vector3d& x) { out.insert(out.end(), {x.x(), x.y(), x.z()}); };

@@ -11,17 +11,18 @@
 namespace relpos::test {
 namespace {
 
-using json = nlohmann::ordered_json;
+// Ordered: the written spec keeps its keys in the order a person writes them.
+using OrderedJson = nlohmann::ordered_json;
 
-json vec(const Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+OrderedJson vec(const Vector3d& v) { return OrderedJson::array({v.x(), v.y(), v.z()}); }
 
-json poseJson(const Isometry3d& X) {
+OrderedJson poseJson(const Isometry3d& X) {
   const Quaterniond q(X.linear());
   return {{"position", vec(X.translation())},
-          {"orientation", json::array({q.x(), q.y(), q.z(), q.w()})}};
+          {"orientation", OrderedJson::array({q.x(), q.y(), q.z(), q.w()})}};
 }
 
-json featureJson(const Feature& f) {
+OrderedJson featureJson(const Feature& f) {
   switch (f.kind) {
     case FeatureKind::kPoint:
       return {{"point", vec(f.point)}};
@@ -36,14 +37,14 @@ json featureJson(const Feature& f) {
   return nullptr;
 }
 
-json objectJson(const ObjectSpec& o) {
-  json features = json::object();
+OrderedJson objectJson(const ObjectSpec& o) {
+  OrderedJson features = OrderedJson::object();
   for (const NamedFeature& f : o.features) features[f.name] = featureJson(f.feature);
   return {{"name", o.name}, {"pose", poseJson(o.pose)}, {"features", features}};
 }
 
-json constraintJson(const InputConstraint& c) {
-  json j = {{"type", c.type}, {"fixed", c.fixed_name}, {"mobile", c.mobile_name}};
+OrderedJson constraintJson(const InputConstraint& c) {
+  OrderedJson j = {{"type", c.type}, {"fixed", c.fixed_name}, {"mobile", c.mobile_name}};
   if (!c.id.empty()) j["id"] = c.id;
   const ConstraintType* type = builtinRegistry().constraintType(c.type);
   if (!type || type->takes_value) {
@@ -63,9 +64,9 @@ json constraintJson(const InputConstraint& c) {
 }  // namespace
 
 std::string specJson(const Problem& p) {
-  json constraints = json::array();
+  OrderedJson constraints = OrderedJson::array();
   for (const InputConstraint& c : p.constraints) constraints.push_back(constraintJson(c));
-  const json doc = {{"relpos", 1},
+  const OrderedJson doc = {{"relpos", 1},
                     {"name", p.name},
                     {"units", {{"angle", "rad"}}},
                     {"fixed", objectJson(p.fixed)},
