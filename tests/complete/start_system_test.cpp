@@ -67,6 +67,28 @@ TEST(StartSystem, AComputationOverItsStepBudgetStopsWithNoRoots) {
   EXPECT_EQ(within->roots.size(), 9u);  // Bézout
 }
 
+// The budget holds the paths' steps and the root tests together: a computation fits a budget of
+// exactly their sum and runs over one less (each test costs about a step where the roots crowd).
+TEST(StartSystem, TheRootTestsCountInTheStepBudget) {
+  const testing::DenseFamily f(2, 3);
+  for (const bool cross_check : {false, true}) {
+    const auto free = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0, 0, cross_check);
+    ASSERT_EQ(free->roots.size(), 9u);  // Bézout
+    EXPECT_GT(free->steps, 0);
+    EXPECT_GE(free->root_tests, 9);  // one certificate per root added, at least
+    const std::int64_t work = free->steps + free->root_tests;
+    const auto fits = detail::computeStartSystem(f, detail::kDefaultMaxBezout, 0,
+                                                 static_cast<std::uint64_t>(work), cross_check);
+    EXPECT_EQ(fits->roots.size(), 9u) << cross_check;
+    EXPECT_EQ(fits->steps, free->steps);
+    EXPECT_EQ(fits->root_tests, free->root_tests);
+    const auto short_one = detail::computeStartSystem(
+        f, detail::kDefaultMaxBezout, 0, static_cast<std::uint64_t>(work - 1), cross_check);
+    EXPECT_EQ(short_one->check, "over the step budget") << cross_check;
+    EXPECT_TRUE(short_one->roots.empty());
+  }
+}
+
 // While solving (findStartSystem, a step budget) the start system is monodromy's alone — a
 // fixed graph of members, then loops — with every root (the cross-check is what startSystem,
 // unbudgeted, and the stored ones add).
