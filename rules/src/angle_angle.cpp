@@ -8,7 +8,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace angle_angle_family {
 using namespace detail;
 
 // App. II: unit vectors at angle a from u and b from v (u, v independent unit vectors).
@@ -210,10 +211,10 @@ constexpr RuleCaseRow kCases[] = {
     {kParallelFixes, "parallel-fixes-angle", "PMF App. IV Table X (β = 0, σ_b = nπ)"},
     {kParallelAndAngle, "parallel-and-angle", "PMF App. IV Table X, row 8 (β = 0): s± of App. II"}};
 
-}  // namespace
+}  // namespace angle_angle_family
 
 constexpr RuleFamily families::angle_angle =
     family("angle+angle", "PMF App. IV Table X", FundamentalKind::kAngle, FundamentalKind::kAngle,
-           &twoAngles, kCases);
+           &angle_angle_family::twoAngles, angle_angle_family::kCases);
 
 }  // namespace relpos::rules

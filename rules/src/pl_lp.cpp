@@ -4,7 +4,8 @@
 #include "mixed_roles.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pl_lp_family {
 using namespace detail;
 
 void lineLine(const Fundamental& x, const Fundamental& y, const Tolerance& tol, RuleOutput& out,
@@ -16,10 +17,10 @@ void lineLine(const Fundamental& x, const Fundamental& y, const Tolerance& tol, 
 constexpr RuleCaseRow kCases[] = {
     {kPointsOrLines, "points-or-lines", "PMF App. IV Table VIII, row 1"}};
 
-}  // namespace
+}  // namespace pl_lp_family
 
 constexpr RuleFamily families::pl_lp =
     family("pl+lp", "PMF App. IV Table VIII", FundamentalKind::kPointLine,
-           FundamentalKind::kPointLine, &lineLine, kCases);
+           FundamentalKind::kPointLine, &pl_lp_family::lineLine, pl_lp_family::kCases);
 
 }  // namespace relpos::rules

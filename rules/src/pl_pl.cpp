@@ -7,7 +7,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pl_pl_family {
 using namespace detail;
 
 enum Case {
@@ -218,10 +219,11 @@ constexpr RuleCaseRow kCases[] = {
     {kNearOwnLine, "near-own-line", "PMF App. IV Table IV, row 1"},
     {kCollinear, "collinear", "PMF App. IV Table III, rows 3, 4 and 8 (d_a ≠ 0)"}};
 
-}  // namespace
+}  // namespace pl_pl_family
 
 constexpr RuleFamily families::pl_pl =
     family("pl+pl", "PMF App. IV Tables III and IV", FundamentalKind::kPointLine,
-           FundamentalKind::kPointLine, &withLengthErr<twoPointLine>, kCases);
+           FundamentalKind::kPointLine, &pl_pl_family::withLengthErr<pl_pl_family::twoPointLine>,
+           pl_pl_family::kCases);
 
 }  // namespace relpos::rules

@@ -4,7 +4,8 @@
 #include "mixed_roles.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pl_planep_family {
 using namespace detail;
 
 void linePlane(const Fundamental& x, const Fundamental& y, const Tolerance& tol, RuleOutput& out,
@@ -15,10 +16,10 @@ void linePlane(const Fundamental& x, const Fundamental& y, const Tolerance& tol,
 constexpr RuleCaseRow kCases[] = {
     {kPointsOrLines, "points-or-plane", "PMF App. IV Table IX, row 1"}};
 
-}  // namespace
+}  // namespace pl_planep_family
 
 constexpr RuleFamily families::pl_planep =
     family("pl+planep", "PMF App. IV Table IX", FundamentalKind::kPointLine,
-           FundamentalKind::kPointPlane, &linePlane, kCases);
+           FundamentalKind::kPointPlane, &pl_planep_family::linePlane, pl_planep_family::kCases);
 
 }  // namespace relpos::rules

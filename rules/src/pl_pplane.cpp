@@ -7,7 +7,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pl_pplane_family {
 using namespace detail;
 
 enum Case { kIncompatible, kLineMeetsPlane, kImplied, kLinesOnPlane, kParallelSpan, kStretched };
@@ -88,10 +89,11 @@ constexpr RuleCaseRow kCases[] = {
     {kParallelSpan, "parallel-span", "PMF App. IV Table VI, rows 7 and 8 (K ∥ Π, p = 0)"},
     {kStretched, "stretched", "PMF App. IV Table VI, row 2 (d_b − d_a = p)"}};
 
-}  // namespace
+}  // namespace pl_pplane_family
 
-constexpr RuleFamily families::pl_pplane =
-    family("pl+pplane", "PMF App. IV Table VI", FundamentalKind::kPointLine,
-           FundamentalKind::kPointPlane, &withLengthErr<pointLineAndPointPlane>, kCases);
+constexpr RuleFamily families::pl_pplane = family(
+    "pl+pplane", "PMF App. IV Table VI", FundamentalKind::kPointLine, FundamentalKind::kPointPlane,
+    &pl_pplane_family::withLengthErr<pl_pplane_family::pointLineAndPointPlane>,
+    pl_pplane_family::kCases);
 
 }  // namespace relpos::rules

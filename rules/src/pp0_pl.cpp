@@ -7,7 +7,8 @@
 #include "pinned.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp0_pl_family {
 using namespace detail;
 
 enum Case { kIncompatible, kImplied, kCone, kPoints, kThrough };
@@ -77,11 +78,11 @@ constexpr RuleCaseRow kCases[] = {
     {kPoints, "points", "PMF App. IV Table II, row 10 (d_b < d_a, p = q = 0)"},
     {kThrough, "line-through-point", "PMF App. IV Table VIII, p = 0 rows (generalised)"}};
 
-}  // namespace
+}  // namespace pp0_pl_family
 
-constexpr RuleFamily families::pp0_pl =
-    family("pp0+pl", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
-           FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
-           &withLengthErr<pinnedWithPointLine>, kCases);
+constexpr RuleFamily families::pp0_pl = family(
+    "pp0+pl", "PMF App. IV Tables II and VIII, p = 0 rows (generalised)",
+    FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
+    &pp0_pl_family::withLengthErr<pp0_pl_family::pinnedWithPointLine>, pp0_pl_family::kCases);
 
 }  // namespace relpos::rules

@@ -7,7 +7,8 @@
 #include "pinned.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp0_pp_family {
 using namespace detail;
 
 enum Case { kIncompatible, kImplied, kAngle };
@@ -47,10 +48,11 @@ constexpr RuleCaseRow kCases[] = {
     {kImplied, "implied", "PMF App. IV Table I, row 2 with q = 0"},
     {kAngle, "angle", "PMF App. IV Table I, row 5 (generalised: law of cosines)"}};
 
-}  // namespace
+}  // namespace pp0_pp_family
 
 constexpr RuleFamily families::pp0_pp = family(
     "pp0+pp", "PMF App. IV Table I, rows with q = 0 (generalised)", FundamentalKind::kPointPoint,
-    FundamentalKind::kPointPoint, &withLengthErr<pinnedWithPointPoint>, kCases);
+    FundamentalKind::kPointPoint,
+    &pp0_pp_family::withLengthErr<pp0_pp_family::pinnedWithPointPoint>, pp0_pp_family::kCases);
 
 }  // namespace relpos::rules

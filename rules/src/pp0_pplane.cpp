@@ -6,7 +6,8 @@
 #include "pinned.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp0_pplane_family {
 using namespace detail;
 
 enum Case { kIncompatible, kImplied, kAngle };
@@ -43,11 +44,12 @@ constexpr RuleCaseRow kCases[] = {
     {kImplied, "implied", "PMF App. IV Table V, row 2 with p = 0"},
     {kAngle, "angle", "PMF App. IV Table V, rows 5 and 6 (generalised)"}};
 
-}  // namespace
+}  // namespace pp0_pplane_family
 
 constexpr RuleFamily families::pp0_pplane =
     family("pp0+pplane", "PMF App. IV Tables V and IX, p = 0 rows (generalised)",
            FundamentalKind::kPointPoint, FundamentalKind::kPointPlane,
-           &withLengthErr<pinnedWithPointPlane>, kCases);
+           &pp0_pplane_family::withLengthErr<pp0_pplane_family::pinnedWithPointPlane>,
+           pp0_pplane_family::kCases);
 
 }  // namespace relpos::rules

@@ -9,7 +9,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp_pl_family {
 using namespace detail;
 
 enum Case {
@@ -97,10 +98,10 @@ constexpr RuleCaseRow kCases[] = {
     {kCollinear, "collinear", "PMF App. IV Table II, rows 7 and 10 (d_a, d_b ≠ 0)"},
     {kExtremeOnAxis, "extreme-on-axis", "PMF App. IV Table II, row 6 (d_a = q − p, d_b = 0)"}};
 
-}  // namespace
+}  // namespace pp_pl_family
 
-constexpr RuleFamily families::pp_pl =
-    family("pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint,
-           FundamentalKind::kPointLine, &withLengthErr<pointPointAndPointLine>, kCases);
+constexpr RuleFamily families::pp_pl = family(
+    "pp+pl", "PMF App. IV Table II", FundamentalKind::kPointPoint, FundamentalKind::kPointLine,
+    &pp_pl_family::withLengthErr<pp_pl_family::pointPointAndPointLine>, pp_pl_family::kCases);
 
 }  // namespace relpos::rules

@@ -8,7 +8,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp_pp_family {
 using namespace detail;
 
 enum Case { kIncompatible, kSamePoints, kTangentSpheres, kCircle, kCollinear, kEqualSpan };
@@ -66,10 +67,10 @@ constexpr RuleCaseRow kCases[] = {
     {kCollinear, "collinear", "PMF App. IV Table I, rows 3 and 6 (d_a ≠ 0)"},
     {kEqualSpan, "equal-span", "PMF App. IV Table I, row 7"}};
 
-}  // namespace
+}  // namespace pp_pp_family
 
-constexpr RuleFamily families::pp_pp =
-    family("pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint,
-           FundamentalKind::kPointPoint, &withLengthErr<twoPointPoint>, kCases);
+constexpr RuleFamily families::pp_pp = family(
+    "pp+pp", "PMF App. IV Table I", FundamentalKind::kPointPoint, FundamentalKind::kPointPoint,
+    &pp_pp_family::withLengthErr<pp_pp_family::twoPointPoint>, pp_pp_family::kCases);
 
 }  // namespace relpos::rules

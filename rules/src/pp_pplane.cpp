@@ -8,7 +8,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pp_pplane_family {
 using namespace detail;
 
 enum Case { kIncompatible, kCircle, kTangent, kStretched };
@@ -50,10 +51,11 @@ constexpr RuleCaseRow kCases[] = {
     {kTangent, "tangent", "PMF App. IV Table V, row 2 (d_b = p, d_a = 0)"},
     {kStretched, "stretched", "PMF App. IV Table V, row 3 (d_b − d_a = p)"}};
 
-}  // namespace
+}  // namespace pp_pplane_family
 
-constexpr RuleFamily families::pp_pplane =
-    family("pp+pplane", "PMF App. IV Table V", FundamentalKind::kPointPoint,
-           FundamentalKind::kPointPlane, &withLengthErr<pointPointAndPointPlane>, kCases);
+constexpr RuleFamily families::pp_pplane = family(
+    "pp+pplane", "PMF App. IV Table V", FundamentalKind::kPointPoint, FundamentalKind::kPointPlane,
+    &pp_pplane_family::withLengthErr<pp_pplane_family::pointPointAndPointPlane>,
+    pp_pplane_family::kCases);
 
 }  // namespace relpos::rules

@@ -6,7 +6,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace pplane_pplane_family {
 using namespace detail;
 
 enum Case { kIncompatible, kSamePlane, kPlanesMeet, kParallelSpan };
@@ -65,10 +66,12 @@ constexpr RuleCaseRow kCases[] = {
     {kPlanesMeet, "planes-meet", "PMF App. IV Table VII, row 3 (Fig. 3c)"},
     {kParallelSpan, "parallel-span", "PMF App. IV Table VII, rows 4 and 5 (Fig. 3d)"}};
 
-}  // namespace
+}  // namespace pplane_pplane_family
 
 constexpr RuleFamily families::pplane_pplane =
     family("pplane+pplane", "PMF App. IV Table VII, Fig. 3", FundamentalKind::kPointPlane,
-           FundamentalKind::kPointPlane, &withLengthErr<twoPointPlane>, kCases);
+           FundamentalKind::kPointPlane,
+           &pplane_pplane_family::withLengthErr<pplane_pplane_family::twoPointPlane>,
+           pplane_pplane_family::kCases);
 
 }  // namespace relpos::rules

@@ -7,7 +7,8 @@
 #include "ranges.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace range_pl_pl_family {
 using namespace detail;
 
 void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
@@ -25,10 +26,10 @@ constexpr RuleCaseRow kCases[] = {
     {kNested, "nested", "Somani 004 Table VII, coaxial distance ranges: nested ranges"},
     {kOverlap, "overlap", "Somani 004 Table VII, coaxial distance ranges: overlapping ranges"}};
 
-}  // namespace
+}  // namespace range_pl_pl_family
 
-constexpr RuleFamily families::range_pl_pl =
-    family("range:pl+pl", "Somani 004 Table VII", FundamentalKind::kPointLine,
-           FundamentalKind::kPointLine, &coaxialCylinders, kCases, /*handles_ranges=*/true);
+constexpr RuleFamily families::range_pl_pl = family(
+    "range:pl+pl", "Somani 004 Table VII", FundamentalKind::kPointLine, FundamentalKind::kPointLine,
+    &range_pl_pl_family::coaxialCylinders, range_pl_pl_family::kCases, /*handles_ranges=*/true);
 
 }  // namespace relpos::rules

@@ -12,7 +12,8 @@
 #include "rule_helpers.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace range_pline_pplane_family {
 using namespace detail;
 
 enum Case { kDisjoint, kOneStrip, kTwoStrips };
@@ -62,11 +63,12 @@ constexpr RuleCaseRow kCases[] = {
     {kTwoStrips, "two-strips",
      "Somani 004 Table VII: a parallel plane cuts a thick cylinder in two strips"}};
 
-}  // namespace
+}  // namespace range_pline_pplane_family
 
 constexpr RuleFamily families::range_pline_pplane =
     family("range:pline+pplane", "Somani 004 Table VII (PMF-style limit cases)",
-           FundamentalKind::kPointLine, FundamentalKind::kPointPlane, &cylinderCutByParallelPlane,
-           kCases, /*handles_ranges=*/true);
+           FundamentalKind::kPointLine, FundamentalKind::kPointPlane,
+           &range_pline_pplane_family::cylinderCutByParallelPlane,
+           range_pline_pplane_family::kCases, /*handles_ranges=*/true);
 
 }  // namespace relpos::rules

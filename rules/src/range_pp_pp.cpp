@@ -7,7 +7,8 @@
 #include "ranges.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace range_pp_pp_family {
 using namespace detail;
 
 void concentricSpheres(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
@@ -22,10 +23,11 @@ constexpr RuleCaseRow kCases[] = {
     {kNested, "nested", "Somani 004 Table VII, concentric distance ranges: nested ranges"},
     {kOverlap, "overlap", "Somani 004 Table VII, concentric distance ranges: overlapping ranges"}};
 
-}  // namespace
+}  // namespace range_pp_pp_family
 
 constexpr RuleFamily families::range_pp_pp =
     family("range:pp+pp", "Somani 004 Table VII", FundamentalKind::kPointPoint,
-           FundamentalKind::kPointPoint, &concentricSpheres, kCases, /*handles_ranges=*/true);
+           FundamentalKind::kPointPoint, &range_pp_pp_family::concentricSpheres,
+           range_pp_pp_family::kCases, /*handles_ranges=*/true);
 
 }  // namespace relpos::rules

@@ -6,7 +6,8 @@
 #include "ranges.hpp"
 
 namespace relpos::rules {
-namespace {
+// Named, not anonymous: a unity source holds several families (rules/CMakeLists.txt).
+namespace range_pplane_pplane_family {
 using namespace detail;
 
 // A point-plane constraint with the overlap [lo, hi] on the first constraint's plane; a single
@@ -38,11 +39,12 @@ constexpr RuleCaseRow kCases[] = {
     {kNested, "nested", "Somani 004 Table VII, parallel plane ranges: nested ranges"},
     {kOverlap, "overlap", "Somani 004 Table VII, parallel plane ranges: overlapping ranges"}};
 
-}  // namespace
+}  // namespace range_pplane_pplane_family
 
 constexpr RuleFamily families::range_pplane_pplane =
     family("range:pplane+pplane", "Somani 004 Table VII (PMF-style limit cases)",
-           FundamentalKind::kPointPlane, FundamentalKind::kPointPlane, &parallelSlabs, kCases,
+           FundamentalKind::kPointPlane, FundamentalKind::kPointPlane,
+           &range_pplane_pplane_family::parallelSlabs, range_pplane_pplane_family::kCases,
            /*handles_ranges=*/true);
 
 }  // namespace relpos::rules
