@@ -71,16 +71,16 @@ class RootSet {
   // Polishes and certifies x; adds it unless it is a root already known. True if added.
   bool add(CVec x) {
     if (detail::polish(shape_, coefficients_, x, scratch_, 6) < 0.0) return false;
-    test();
+    chargeTest();
     const detail::BoxCertificate c = certifier_.certify(x);
     if (!c.ok) return false;
     for (std::size_t i = 0; i < roots_.size(); ++i) {
       if (!detail::boxesOverlap(roots_[i], radii_[i], c.x, c.radius)) continue;
       // One root only if a box holding both boxes holds one root.
       const double d = detail::normInf(roots_[i] - c.x) + radii_[i] + c.radius;
-      test();
+      chargeTest();
       if (certifier_.testComplex(roots_[i], 1.01 * d)) return false;
-      test();
+      chargeTest();
       if (certifier_.testComplex(roots_[i], 10 * d)) return false;
     }
     roots_.push_back(c.x);
@@ -90,13 +90,13 @@ class RootSet {
   const std::vector<CVec>& roots() const { return roots_; }
 
  private:
-  const detail::CompiledShape& shape_;
-  const Complex* coefficients_;
-  detail::Certifier certifier_;
-  void test() {
+  void chargeTest() {
     if (budget_ != nullptr) budget_->takeTest();
   }
 
+  const detail::CompiledShape& shape_;
+  const Complex* coefficients_;
+  detail::Certifier certifier_;
   detail::EvalScratch scratch_;
   StepBudget* budget_;
   std::vector<CVec> roots_;

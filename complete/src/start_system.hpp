@@ -25,8 +25,8 @@ inline constexpr std::uint64_t kSolvingStepBudget = 600000;
 // Above max_bezout the count is cross-checked by a second monodromy instead.
 // seed (0: the signature's stable hash, what startSystem uses) picks the generic member and the
 // monodromy loops; another seed gives an independent computation of the same count.
-// max_steps (0: no limit): predictor-corrector steps, and the Krawczyk tests that tell a new
-// root from the known ones counted as steps too; past it the computation stops, with no roots
+// max_steps (0: no limit): predictor-corrector steps, the Krawczyk tests of the roots found
+// counted as steps too (StartSystem::root_tests); past it the computation stops, with no roots
 // and check "over the step budget".
 // cross_check false: monodromy alone (check "monodromy"), what a solve computes (startSystem's
 // cache, findStartSystem): on the 227 families of 20,000 random 2-4-constraint specs the

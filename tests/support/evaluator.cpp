@@ -11,6 +11,7 @@ namespace {
 using K = FeatureKind;
 
 using W = WorldFeature;
+
 double elevation(const Vector3d& d, const Vector3d& n) {
   return 3.14159265358979323846 / 2 - angleOf(d, n);
 }

@@ -32,8 +32,9 @@ struct StartSystem {
   int second_monodromy_added = 0;
   int trace_witness_points = 0;  // the trace test's witness set (0: not run or not passed)
   // The work of computing it (added for issue 18's step budget, docs/spec.md §8.5): the
-  // predictor-corrector steps of its paths, and the Krawczyk tests that told each new root from
-  // the known ones; a budget of max_steps holds steps + root_tests. 0 for a stored one.
+  // predictor-corrector steps of its paths, and the Krawczyk tests of the roots found (each
+  // one's certificate, and those that told it from the known ones); a budget of max_steps holds
+  // steps + root_tests. 0 for a stored one.
   std::int64_t steps = 0;
   std::int64_t root_tests = 0;
   // Read from the start systems stored in the repository (data/start_systems, compiled in)
