@@ -36,25 +36,18 @@ constexpr int kStaleLoops = 8;
 constexpr int kStaleAfterGraph = 3;
 constexpr int kMaxLoops = 400;
 
-// The predictor-corrector steps a computation may still take (unlimited unless `limited`), and
-// the root tests of RootSet::add, each counted as a step: a test evaluates the system and its
-// Jacobian over a box, about a step's work, and where the roots' boxes crowd together a new root
-// meets a hundred known ones (a family of 3,152 roots took 440,000 tests beside its 600,000
-// steps: 43 s where the budget means about 8; counting the tests, 12 s).
-// Both are counted whether limited or not (StartSystem::steps, root_tests).
+// A computation's predictor-corrector steps and the root tests of RootSet::add, counted whether
+// limited or not (StartSystem::steps, root_tests), and the limit of the two together (0: none).
+// A test counts as a step: it evaluates the system and its Jacobian over a box, about a step's
+// work, and where the roots' boxes crowd together a new root meets a hundred known ones (a family
+// of 3,152 roots took 440,000 tests beside its 600,000 steps: 43 s where the budget means about
+// 8; counting the tests, 12 s).
 struct StepBudget {
-  std::int64_t left = 0;
-  bool limited = false;
+  std::int64_t limit = 0;
   std::int64_t steps = 0, tests = 0;
-  bool exceeded() const { return limited && left < 0; }
-  void takeSteps(std::int64_t n) {
-    steps += n;
-    if (limited) left -= n;
-  }
-  void takeTest() {
-    ++tests;
-    if (limited) --left;
-  }
+  bool limited() const { return limit > 0; }
+  std::int64_t left() const { return limit - steps - tests; }
+  bool exceeded() const { return limited() && left() < 0; }
 };
 
 // The certified roots of the start member found so far; each test charged to `budget` if given.
@@ -91,7 +84,7 @@ class RootSet {
 
  private:
   void chargeTest() {
-    if (budget_ != nullptr) budget_->takeTest();
+    if (budget_ != nullptr) ++budget_->tests;
   }
 
   const detail::CompiledShape& shape_;
@@ -118,7 +111,7 @@ std::vector<CVec> trackSegment(const Family& f, const detail::CompiledShape& sha
   for (const CVec& s : starts) {
     const detail::PathEnd e = tracker.track(s);
     if (budget) {
-      budget->takeSteps(e.steps);
+      budget->steps += e.steps;
       if (budget->exceeded()) break;
     }
     if (e.status == detail::PathStatus::kFinite) out.push_back(e.x);
@@ -210,7 +203,7 @@ int graphMonodromy(const Family& f, const detail::CompiledShape& shape,
         const CVec x = sets[e.from]->roots()[e.done++];
         const detail::PathEnd end = tracker.track(x);
         ++tracked;
-        budget.takeSteps(end.steps);
+        budget.steps += end.steps;
         if (end.status == detail::PathStatus::kFinite) sets[e.to]->add(end.x);
         progress = true;
       }
@@ -228,8 +221,7 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
                                                 bool cross_check) {
   auto out = std::make_unique<StartSystem>();
   StepBudget budget;
-  budget.limited = max_steps > 0;
-  budget.left = static_cast<std::int64_t>(
+  budget.limit = static_cast<std::int64_t>(
       std::min<std::uint64_t>(max_steps, std::numeric_limits<std::int64_t>::max()));
   auto done = [&] {
     out->steps = budget.steps;
@@ -279,11 +271,11 @@ std::unique_ptr<StartSystem> computeStartSystem(const Family& f, std::uint64_t m
     const std::size_t before = set.roots().size();
     // (Its own counter, started at what is left: counted in the budget's steps either way.)
     const std::int64_t start =
-        budget.limited ? budget.left : std::numeric_limits<std::int64_t>::max();
+        budget.limited() ? budget.left() : std::numeric_limits<std::int64_t>::max();
     std::int64_t left = start;
     const std::vector<CVec> ends =
         totalDegreeEndpoints(f.shape(), c0.data(), mixSeed(seed, 2), &left);
-    budget.takeSteps(start - left);
+    budget.steps += start - left;
     if (budget.exceeded()) return overBudget();
     for (const CVec& e : ends) set.add(e);
     if (budget.exceeded()) return overBudget();
