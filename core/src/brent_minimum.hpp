@@ -10,13 +10,15 @@ namespace relpos::detail {
 
 // A local minimum of f in [lo, hi] from x (f(x) = fx, nearer than f at lo and hi for a bracket):
 // every point weighed is kept by f's caller if it wants the nearest. Ends when the interval left is
-// within tolerance·|x| + tolerance/4 of x, or after max_iter evaluations.
+// within tolerance·|x| + tolerance/4 of x, after max_iter evaluations, or where two evaluations in
+// a row weigh exactly f(x).
 template <class F>
 double brentMinimumFrom(F&& f, double lo, double hi, double x, double fx, double tolerance,
                         int max_iter) {
   constexpr double kGolden = 0.3819660112501051;  // 2 − φ
   double w = x, v = x, fw = fx, fv = fx;
   double delta = 0.0, delta2 = 0.0;
+  int ties = 0;
   for (int count = 0; count < max_iter; ++count) {
     const double mid = 0.5 * (lo + hi);
     const double fract1 = tolerance * std::abs(x) + tolerance / 4, fract2 = 2 * fract1;
@@ -43,6 +45,10 @@ double brentMinimumFrom(F&& f, double lo, double hi, double x, double fx, double
     }
     const double u = std::abs(delta) >= fract1 ? x + delta : (delta > 0 ? x + fract1 : x - fract1);
     const double fu = f(u);
+    // Two points in a row weighing exactly what x does: f is flat here to the last bit (a plateau
+    // of the metric, or the rounding's width about a smooth minimum), and x is as near as any.
+    ties = fu == fx ? ties + 1 : 0;
+    if (ties == 2) break;
     if (fu <= fx) {
       (u >= x ? lo : hi) = x;
       v = w, fv = fw;

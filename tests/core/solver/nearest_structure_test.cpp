@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "brent_minimum.hpp"
 #include "kink_certificate.hpp"
 #include "nearest_eval.hpp"
 #include "nearest_one_angle.hpp"
@@ -198,6 +199,28 @@ TEST(NearestStructure, TheSearchWeighsAPoseAsThePoseWithItsClosedForms) {
   });
   EXPECT_GT(branches, 40);
   EXPECT_GT(shortcut, 20);  // branches that took a shortcut (the default is bit for bit)
+}
+
+TEST(NearestStructure, BrentStopsOnAPlateauAndStillConvergesOnASmoothMinimum) {
+  // The one-angle search's Brent ends where f is flat to the last bit (a plateau of the metric:
+  // a cylinder grasp whose spin leaves the distance the same over a range of the turn). Before,
+  // it halved the plateau by golden sections to its tolerance: 36 poses where 2 tell.
+  int evaluations = 0;
+  auto plateau = [&](double x) {
+    ++evaluations;
+    return 1.0 + std::max(0.0, std::abs(x - 0.2) - 0.4);  // flat at 1 over [-0.2, 0.6]
+  };
+  const double x = detail::brentMinimumFrom(plateau, -1.0, 1.0, 0.0, 1.0, 1.4901161193847656e-08,
+                                            60);
+  EXPECT_EQ(plateau(x), 1.0);
+  EXPECT_LE(evaluations, 4);  // (3 plus the line above)
+  // A smooth minimum is reached to the tolerance as before: ties there are within rounding.
+  for (double at : {0.3, -0.7, 0.95}) {
+    auto smooth = [&](double x) { return 2.0 + (x - at) * (x - at) * (1.0 + x * x); };
+    const double found =
+        detail::brentMinimumFrom(smooth, -1.0, 1.0, 0.0, smooth(0.0), 1.4901161193847656e-08, 60);
+    EXPECT_NEAR(found, at, 1e-7) << at;
+  }
 }
 
 TEST(NearestStructure, OneSearchedAngleIsNoFartherThanADenseScan) {
