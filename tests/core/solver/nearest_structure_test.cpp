@@ -216,7 +216,7 @@ TEST(NearestStructure, BrentStopsOnAPlateauAndStillConvergesOnASmoothMinimum) {
   EXPECT_LE(evaluations, 4);  // (3 plus the line above)
   // A smooth minimum is reached to the tolerance as before: ties there are within rounding.
   for (double at : {0.3, -0.7, 0.95}) {
-    auto smooth = [&](double x) { return 2.0 + (x - at) * (x - at) * (1.0 + x * x); };
+    auto smooth = [&](double y) { return 2.0 + (y - at) * (y - at) * (1.0 + y * y); };
     const double found =
         detail::brentMinimumFrom(smooth, -1.0, 1.0, 0.0, smooth(0.0), 1.4901161193847656e-08, 60);
     EXPECT_NEAR(found, at, 1e-7) << at;
