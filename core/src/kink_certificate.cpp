@@ -14,7 +14,7 @@ constexpr int kMaxSearched = 3;  // a rotation has three directions: J_r injecti
 
 // The largest rotation no step can reach that is still treated as a kink's (the distance's
 // curvature across it is about 1/ε, which the model below carries exactly).
-constexpr double kNearKink = 1e-4;
+constexpr double kNearKink = kKinkReach;
 constexpr double kUnreachable = 0.25;
 
 }  // namespace

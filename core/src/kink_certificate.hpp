@@ -6,6 +6,11 @@
 
 namespace relpos::detail {
 
+// The rotation ε (radians) by which X's may miss every rotation of the branch and still count as
+// reached: the certificate's model carries it. It proves nothing where the branch's nearest
+// rotation misses X's by more (twice this, to be clear of the model's rounding).
+constexpr double kKinkReach = 1e-4;
+
 // From *best (its distance *best_d), steps on the rotation's residual alone, each taken only when
 // it lowers the distance, to the point where the rotation equals X's; there, true when that point
 // is a strict local minimum of the distance: with J_r and J_t the rotation's and the translation's

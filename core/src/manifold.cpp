@@ -20,6 +20,12 @@ double Manifold::searchDistance(const Isometry3d& X, Params* theta) const {
   return poseDistance(poseWithTail(X, theta), X);
 }
 
+double Manifold::nearestRotation(const Isometry3d& X, Params* theta) const {
+  (void)X;
+  (void)theta;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
   Isometry3d Y = pose(project(X));
   double scale = std::max(1.0, X.translation().norm());

@@ -150,6 +150,23 @@ double RadialGraspManifold::searchDistance(const Isometry3d& X, Params* th) cons
   return (T - X.translation()).norm() + std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
+double RadialGraspManifold::nearestRotation(const Isometry3d& X, Params* th) const {
+  if (!spin_closed_) return std::numeric_limits<double>::quiet_NaN();
+  // Over the spin the least angle from X is the angle between a(ψ) = F Rz(ψ) A z and X's approach
+  // direction b (searchDistance), and a(ψ) turns p = F A z about the axis f = F z: a·b is
+  // p_∥·b + cos ψ p_⊥·b + sin ψ (f × p)·b, greatest at ψ* below (any ψ where b lies along the
+  // axis: every ψ is as near).
+  const Vector3d f = F_.linear().col(2), p = F_.linear() * A_.linear().col(2);
+  const Vector3d b = X.linear() * L_inv_.linear().row(2).transpose();
+  const double along = p.dot(b) - p.dot(f) * b.dot(f), across = f.cross(p).dot(b);
+  Params& t = *th;
+  if (along != 0.0 || across != 0.0) t[0] = std::atan2(across, along);
+  const Matrix3d P = outerRotation(t[0]) * A_.linear();
+  t[dof() - 1] = bestSpinAbout(Vector3d::UnitZ(), L_inv_.linear() * X.linear().transpose() * P);
+  const Vector3d a = P.col(2);
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
 bool RadialGraspManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
   RadialGraspSpec moved = s_;
   moved.axis_point += offset_W;

@@ -1,5 +1,7 @@
 #include "relpos/manifolds/separable.hpp"
 
+#include <limits>
+
 namespace relpos::manifolds {
 
 SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPart& t)
@@ -77,6 +79,13 @@ double SeparableManifold::searchDistance(const Isometry3d& X, Params* theta) con
   const Vector3d a = P * u, b = X.linear() * u;
   const Vector3d T = trans_.projectAndPlace(P, X.translation(), theta->data() + rot_.dof());
   return (T - X.translation()).norm() + std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+double SeparableManifold::nearestRotation(const Isometry3d& X, Params* theta) const {
+  // The rotations of the branch are its rotation part's, whatever the translation.
+  if (!rot_.projectsExactly()) return std::numeric_limits<double>::quiet_NaN();
+  rot_.project(X.linear(), theta->data());
+  return rotationDistance(rot_.rotation(theta->data()), X.linear());
 }
 
 bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {

@@ -223,6 +223,45 @@ TEST(NearestStructure, BrentStopsOnAPlateauAndStillConvergesOnASmoothMinimum) {
   }
 }
 
+TEST(NearestStructure, NearestRotationIsTheBranchsNearestRotation) {
+  // Manifold::nearestRotation, where a type has it: the rotation it sets is at the angle it
+  // returns from X's, and no pose of the branch (random ones over the whole branch, and ones
+  // about the answer) has a rotation nearer X's. The one-angle search trusts both: it settles a
+  // kink there, and tries no certificate where that angle is out of the certificate's reach.
+  std::mt19937_64 rng(1207);
+  std::normal_distribution<double> normal;
+  int branches = 0, radial = 0, separable = 0, near_kinks = 0;
+  forEachBranch([&](const Problem& p, const Branch& b) {
+    const Manifold& m = *b.manifold;
+    Params probe = referenceParams(m);
+    if (!std::isfinite(m.nearestRotation(p.mobile.pose, &probe))) return;
+    ++branches;
+    radial += std::string(m.typeName()) == "RadialGrasp";
+    separable += m.rotationalDof() >= 0;
+    for (int k = 0; k < 6; ++k) {
+      Isometry3d X = p.mobile.pose;
+      if (k > 0) X.linear() = axisAngle(randomDirection(normal, rng), 0.6 * k) * X.linear();
+      if (k == 5) X = m.pose(sampleParameters(m, referenceParams(m), 1.0, rng));  // reached
+      Params t = referenceParams(m);
+      const double angle = m.nearestRotation(X, &t);
+      ASSERT_TRUE(std::isfinite(angle)) << p.name;
+      EXPECT_NEAR(rotationDistance(m.pose(t).linear(), X.linear()), angle, 1e-9) << p.name;
+      near_kinks += angle <= 1e-6;
+      double least = std::numeric_limits<double>::infinity();
+      for (int s = 0; s < 400; ++s) {
+        const Params u = s % 2 ? sampleParameters(m, referenceParams(m), 1.0, rng)
+                               : nearby(m, t, 1e-3, rng);
+        least = std::min(least, rotationDistance(m.pose(u).linear(), X.linear()));
+      }
+      EXPECT_GE(least, angle - 1e-9) << p.name << " " << m.describe();
+    }
+  });
+  EXPECT_GT(branches, 20);
+  EXPECT_GE(radial, 1);  // Somani D's
+  EXPECT_GT(separable, 10);
+  EXPECT_GT(near_kinks, 10);  // the poses drawn on the branch: X's rotation reached
+}
+
 TEST(NearestStructure, OneSearchedAngleIsNoFartherThanADenseScan) {
   // Branches whose only searched parameter is an angle (a cylinder grasp's turn about the axis):
   // the nearest pose is at least as near as the best of 1440 angles across the range, each with

@@ -87,6 +87,14 @@ class Manifold {
   // (After kind(): added with plugin ABI 8.)
   virtual double searchDistance(const Isometry3d& X, Params* theta) const;
 
+  // Where the rotation alone comes nearest X's, where that has a closed form: the rotation's
+  // parameters (the searched ones and a closed-form spin) set in theta to the nearest rotation
+  // of the branch, and that least angle returned — over the whole branch, the other parameters
+  // as they are. NaN (the default) where there is none. The search starts its certificate of a
+  // kink of the distance there (X's rotation reached), and skips the certificate altogether where
+  // X's rotation is out of the branch's reach. (After searchDistance: added with plugin ABI 9.)
+  virtual double nearestRotation(const Isometry3d& X, Params* theta) const;
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };

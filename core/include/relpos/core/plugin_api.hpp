@@ -41,8 +41,9 @@ namespace relpos {
 // tag; the fingerprint below replaced a sum of sizes; 7: issue 15 — Branch gained `exact` and
 // `certified` (a Certificate), Solution `complete`, Registry the numeric stage's hook
 // (setFallback: FallbackInfo, FallbackFn); 8: issue 18 — Manifold gained the virtual
-// searchDistance, a new last slot that a plugin built before it lacks).
-inline constexpr long kPluginAbiVersion = 8;
+// searchDistance, a new last slot that a plugin built before it lacks; 9: issue 18 — and
+// nearestRotation after it).
+inline constexpr long kPluginAbiVersion = 9;
 
 // A fingerprint of every struct a plugin shares with relpos, member by member (offset, size,
 // alignment), and of every callback's signature: a plugin built against headers that differ in

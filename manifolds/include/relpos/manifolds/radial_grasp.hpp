@@ -44,6 +44,9 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   // With the spin closed form, the angle between the approach line's two directions (the least
   // angle over the spin) and the fingertip placed without the spin, which does not move it.
   double searchDistance(const Isometry3d& X, Params* theta) const override;
+  // With the spin closed form: ψ turns the approach direction about the axis, and the nearest
+  // rotation is where it comes nearest X's approach direction (a turn's closed form).
+  double nearestRotation(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
 

@@ -32,6 +32,8 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   // translation placed with the rotation at θ = 0 (which the spin does not move): the spin and
   // its matrices are left to poseWithTail.
   double searchDistance(const Isometry3d& X, Params* theta) const override;
+  // The rotation part's projection, where it is the nearest rotation in angle.
+  double nearestRotation(const Isometry3d& X, Params* theta) const override;
   std::string describe() const override;
   // The translation part's points move; the closed forms are decided again (whether the spin
   // moves the translation depends on where the mobile origin is).
