@@ -57,6 +57,20 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   // converges by golden sections, one bit a pose; the kink's own steps reach it and prove it a
   // minimum in a few. The distance of the point so proven, if it ends the nearest.
   double certified_d = std::numeric_limits<double>::quiet_NaN();
+  // The certificate from θ_i = centre (its distance centre_d): true when it settles a kink there,
+  // its angle then in *settled_at; a nearer point its steps reach is kept either way.
+  auto settleFrom = [&](double centre, double centre_d, double* settled_at) {
+    Params at = *best;
+    at[i] = centre;
+    double at_d = centre_d;
+    if (!settleOnRotationKink(m, X, par, &at, &at_d)) {
+      if (at_d < *best_d) *best = at, *best_d = at_d;  // its steps only ever lower the distance
+      return false;
+    }
+    if (at_d <= *best_d) *best = at, *best_d = certified_d = at_d;
+    *settled_at = at[i];
+    return true;
+  };
   // Where the manifold knows in closed form where its rotation comes nearest X's: reached there
   // (within the certificate's reach), that is the kink, and the certificate settles it from there
   // in a step or two, where from a sample up to 15° off it steps there first, new differences each
@@ -64,36 +78,17 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   Params kink = *best;
   const double kink_angle = m.nearestRotation(X, &kink);
   const bool out_of_reach = kink_angle > 2 * kKinkReach;  // (NaN, not known: false)
-  bool kink_settled = false;
-  double kink_v = 0.0;  // the angle it settled on
+  double kink_v = std::numeric_limits<double>::quiet_NaN();  // the kink settled there, if one
   if (kink_angle <= 2 * kKinkReach) {
-    Params at = *best;
-    at[i] = clampParam(p, kink[i]);
-    double at_d = distanceAt(at[i]);
-    if (at_d < std::numeric_limits<double>::infinity() &&
-        settleOnRotationKink(m, X, par, &at, &at_d)) {
-      if (at_d <= *best_d) *best = at, *best_d = certified_d = at_d;
-      kink_settled = true;
-      kink_v = at[i];
-    } else if (at_d < *best_d) {
-      *best = at, *best_d = at_d;  // the certificate's steps only ever lower the distance
-    }
+    const double at = clampParam(p, kink[i]), at_d = distanceAt(at);
+    if (at_d < std::numeric_limits<double>::infinity()) settleFrom(at, at_d, &kink_v);
   }
-  // Whether a sample's two steps about it hold the kink settled above.
-  auto holdsSettledKink = [&](double centre) {
-    const double apart = p.periodic ? std::remainder(centre - kink_v, 2 * kPi) : centre - kink_v;
-    return kink_settled && std::abs(apart) <= step;
-  };
   auto refineAround = [&](double centre, double centre_d) {
-    if (holdsSettledKink(centre)) return;  // the certificate's point is this basin's minimum
-    Params at = *best;
-    at[i] = centre;
-    double at_d = centre_d;
-    if (!out_of_reach && settleOnRotationKink(m, X, par, &at, &at_d)) {
-      if (at_d <= *best_d) *best = at, *best_d = certified_d = at_d;
-      return;
-    }
-    if (at_d < *best_d) *best = at, *best_d = at_d;  // its steps only ever lower the distance
+    // A settled kink within the sample's two steps is this basin's minimum (NaN: none settled).
+    const double apart = p.periodic ? std::remainder(centre - kink_v, 2 * kPi) : centre - kink_v;
+    if (std::abs(apart) <= step) return;
+    double settled_at;
+    if (!out_of_reach && settleFrom(centre, centre_d, &settled_at)) return;
     double lo = centre - step, hi = centre + step;
     if (!p.periodic) lo = std::max(lo, p.min), hi = std::min(hi, p.max);
     brentMinimumFrom(distanceAt, lo, hi, centre, centre_d, kTolerance, 60);
