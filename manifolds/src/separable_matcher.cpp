@@ -621,9 +621,9 @@ bool matchPlanes(const ConstraintSet& set, const Tolerance& tol, const Tolerance
           !holdsForEveryRotation(ts[i], ts[j], rots, tol,
                                  [](const Vector3d&, const Vector3d&) { return true; }))
         return false;
-  translation::Planes planes;
-  for (const auto& f : ts) planes.linear.push_back(f);
-  out = planes;
+  FixedVector<Fundamental, 3> linear;
+  for (const auto& f : ts) linear.push_back(f);
+  out = translation::Planes(linear);
   // Independent normals (checked at one rotation: their relative orientation is fixed).
   const Matrix3d R = rots.parts[0].baseRotation();
   Eigen::Matrix3d N = Eigen::Matrix3d::Zero();

@@ -7,16 +7,20 @@
 namespace relpos::manifolds::translation {
 namespace {
 
-// kPlanes, for a given R: each linear constraint as rows n·T = h0 + sign·v (v = the range
-// parameter for a ranged plane, 0 otherwise).
-struct PlaneRows {
-  int k = 0;
-  Vector3d n[3];
-  double h0[3] = {0, 0, 0};
-  double sign[3] = {1, 1, 1};
-  int ranged[3] = {-1, -1, -1};     // index of the row's range parameter among the ranged planes
-  Vector3d e1 = Vector3d::UnitX();  // in-plane direction of the first plane (for k = 1)
-};
+// What the projection reads off the rows besides their heights: the directions along every
+// plane, and whether the normals are mutually orthogonal.
+void finishRows(PlaneRows* rows) {
+  if (rows->k == 2) rows->free[0] = rows->n[0].cross(rows->n[1]).normalized();
+  if (rows->k == 1) {
+    rows->free[0] = rows->e1;
+    rows->free[1] = rows->n[0].cross(rows->e1);
+  }
+  rows->orthogonal = true;
+  for (int i = 0; i < rows->k && rows->orthogonal; ++i)
+    for (int j = 0; j < i && rows->orthogonal; ++j)
+      rows->orthogonal =
+          std::abs(rows->n[i].dot(rows->n[j])) <= 1e-12 * rows->n[i].norm() * rows->n[j].norm();
+}
 
 PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d& R) {
   PlaneRows rows;
@@ -57,6 +61,7 @@ PlaneRows planeRowsFor(const FixedVector<Fundamental, 3>& linear, const Matrix3d
         break;
     }
   }
+  finishRows(&rows);
   return rows;
 }
 
@@ -76,16 +81,11 @@ Vector3d flatPoint(const Vector3d* n, const double* h, int m) {
   return (h[0] * c12 + h[1] * c20 + h[2] * c01) / n[0].dot(c12);
 }
 
-// T on every plane at the given range values, and the free directions.
-Vector3d planesPoint(const PlaneRows& rows, const double* v, Vector3d free[2]) {
+// T on every plane at the given range values.
+Vector3d planesPoint(const PlaneRows& rows, const double* v) {
   double h[3];
   for (int i = 0; i < rows.k; ++i)
     h[i] = rows.h0[i] + (rows.ranged[i] >= 0 ? rows.sign[i] * v[rows.ranged[i]] : 0.0);
-  if (rows.k == 2) free[0] = rows.n[0].cross(rows.n[1]).normalized();
-  if (rows.k == 1) {
-    free[0] = rows.e1;
-    free[1] = rows.n[0].cross(rows.e1);
-  }
   return flatPoint(rows.n, h, rows.k);
 }
 
@@ -126,12 +126,7 @@ Vector3d nearestOnRows(const PlaneRows& rows, const FixedVector<Fundamental, 3>&
   // Mutually orthogonal rows (a box; a seam, its two planes, and a range across its ends): each
   // row's height moves along its own normal only, so clamping each on its own is the nearest
   // point, with no active set to search.
-  bool orthogonal = true;
-  for (int i = 0; i < rows.k && orthogonal; ++i)
-    for (int j = 0; j < i && orthogonal; ++j)
-      orthogonal =
-          std::abs(rows.n[i].dot(rows.n[j])) <= 1e-12 * rows.n[i].norm() * rows.n[j].norm();
-  if (orthogonal) {
+  if (rows.orthogonal) {
     Vector3d x = T;
     for (int i = 0; i < rows.k; ++i) {
       const double h = rows.n[i].dot(T);
@@ -215,19 +210,45 @@ Parameter Planes::parameter(int i) const {
   return lengthParameter("lambda");
 }
 
+void Planes::plan() {
+  planned_ = false;
+  int k = 0;
+  for (std::size_t c = 0; c < linear.size(); ++c) {
+    const Fundamental& f = linear[c];
+    if (f.point_side != Side::kMobile) return;  // a mobile plane or line turns with R
+    const int rows = f.kind == FundamentalKind::kPointPlane  ? 1
+                     : f.kind == FundamentalKind::kPointLine ? 2
+                     : f.kind == FundamentalKind::kPointPoint ? 3
+                                                              : 0;
+    for (int r = 0; r < rows && k < 3; ++r) planned_from_[k++] = static_cast<signed char>(c);
+  }
+  // Every row's height is n·(q − R p) (planeOf, shapeOf): at R = I the rest is R's alone.
+  planned_rows_ = planeRowsFor(linear, Matrix3d::Identity());
+  planned_ = planned_rows_.k == k;
+}
+
+PlaneRows Planes::rowsAt(const Matrix3d& R) const {
+  if (!planned_) return planeRowsFor(linear, R);
+  PlaneRows rows = planned_rows_;
+  for (int i = 0; i < rows.k; ++i) {
+    const Fundamental& f = linear[static_cast<std::size_t>(planned_from_[i])];
+    rows.h0[i] = rows.n[i].dot(Vector3d(f.q - R * f.p));
+  }
+  return rows;
+}
+
 Vector3d Planes::translation(const Matrix3d& R, const double* t) const {
-  const PlaneRows rows = planeRowsFor(linear, R);
+  const PlaneRows rows = rowsAt(R);
   const int free = 3 - rows.k;
-  Vector3d dirs[2];
-  Vector3d T = planesPoint(rows, t + free, dirs);
-  for (int j = 0; j < free; ++j) T += t[j] * dirs[j];
+  Vector3d T = planesPoint(rows, t + free);
+  for (int j = 0; j < free; ++j) T += t[j] * rows.free[j];
   return T;
 }
 
 // The nearest point of the set, then its range values (its heights over the planes) and its free
 // coordinates; returns the translation at those parameters.
 Vector3d Planes::projectOntoPlanes(const Matrix3d& R, const Vector3d& T, double* t) const {
-  const PlaneRows rows = planeRowsFor(linear, R);
+  const PlaneRows rows = rowsAt(R);
   const Vector3d N = nearestOnRows(rows, linear, T);
   const int free = 3 - rows.k;
   double* v = t + free;
@@ -241,12 +262,11 @@ Vector3d Planes::projectOntoPlanes(const Matrix3d& R, const Vector3d& T, double*
       }
     ++r;
   }
-  Vector3d dirs[2];
-  Vector3d P = planesPoint(rows, v, dirs);
+  Vector3d P = planesPoint(rows, v);
   const Vector3d foot = P;
   for (int j = 0; j < free; ++j) {
-    t[j] = dirs[j].dot(T - foot);
-    P += t[j] * dirs[j];
+    t[j] = rows.free[j].dot(T - foot);
+    P += t[j] * rows.free[j];
   }
   return P;
 }
