@@ -5,7 +5,7 @@
 set -euo pipefail
 pkgs=(cmake g++ make ccache libeigen3-dev nlohmann-json3-dev libgtest-dev libgmock-dev
       libbenchmark-dev libboost-dev libfcl-dev libcgal-dev python3
-      libslvs1-dev libnlopt-dev libsimdjson-dev pybind11-dev python3-dev python3-numpy)
+      libslvs1-dev libnlopt-dev libsimdjson-dev libfmt-dev pybind11-dev python3-dev python3-numpy)
 # The viewer's script is bundled with npm at build time (viewer/CMakeLists.txt); a machine with
 # Node.js from elsewhere keeps its own.
 if ! command -v npm >/dev/null; then pkgs+=(nodejs npm); fi

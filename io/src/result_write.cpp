@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "relpos/io/result_writer.hpp"
+#include "shortest_double.hpp"
 #include "utf8.hpp"
 
 namespace relpos {
@@ -71,20 +72,22 @@ class Writer {
   }
   // -1 (a mixed manifold's split of its DOF): null.
   void integerOrNull(int v) { v >= 0 ? integer(v) : null(); }
-  // The shortest text that reads back as exactly v (std::to_chars), with ".0" when it would look
-  // like an integer: every reader then takes it as a double (simdjson does not refuse 21 digits
-  // as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat).
+  // The shortest text that reads back as exactly v (std::to_chars's, shortest_double.hpp), with
+  // ".0" when it would look like an integer: every reader then takes it as a double (simdjson
+  // does not refuse 21 digits as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat).
   // Non-finite: null.
   void number(double v) {
     if (!std::isfinite(v)) return null();
     element();
-    room(32);  // at most 24 characters ("-2.2250738585072014e-308"), and ".0"
+    // At most 24 characters ("-2.2250738585072014e-308") and ".0"; writeShortestDouble's copies
+    // may reach 40 bytes.
+    room(40);
     char* const first = &out_[n_];
     char* last;
     if (format_.library_numbers) {
       last = nlohmann::detail::to_chars(first, first + 32, v);  // appends ".0" itself
     } else {
-      last = std::to_chars(first, first + 30, v).ptr;
+      last = detail::writeShortestDouble(first, v);
       if (std::find_if(first, last, [](char c) { return c == '.' || c == 'e'; }) == last) {
         *last++ = '.';
         *last++ = '0';
