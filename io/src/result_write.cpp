@@ -101,6 +101,15 @@ class Writer {
     element();
     put('"');
     for (std::size_t i = 0; i < n; ++i) {
+      // A run of characters that stand for themselves (a name, a kind, a manifold's name: most
+      // strings whole) is copied at once.
+      std::size_t run = i;
+      while (run < n && standsForItself(s[run])) ++run;
+      if (run > i) {
+        put(s + i, run - i);
+        i = run - 1;
+        continue;
+      }
       const unsigned char c = static_cast<unsigned char>(s[i]);
       switch (c) {
         case '"':
@@ -129,8 +138,6 @@ class Writer {
             char esc[8];
             std::snprintf(esc, sizeof esc, "\\u%04x", c);
             put(esc, 6);
-          } else if (c < 0x80) {
-            put(static_cast<char>(c));
           } else {
             // A name may come from a file name that is not UTF-8: each ill-formed part becomes
             // U+FFFD, so the line stays valid JSON text.
@@ -153,6 +160,11 @@ class Writer {
   }
 
  private:
+  // Printable ASCII other than the quote and the backslash: written as it is in a JSON string.
+  static bool standsForItself(char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return c >= 0x20 && c < 0x80 && c != '"' && c != '\\';
+  }
   // Before a value or a key: the comma after the previous element, and in the indented layout
   // the line break and indentation (nlohmann's dump(2) layout).
   void element() {

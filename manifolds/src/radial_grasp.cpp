@@ -54,10 +54,19 @@ Isometry3d RadialGraspManifold::pose(const Params& th) const {
   int k = 1;
   const double h = hFree() ? th[k++] : s_.h_lo;
   const double r = rRanged() ? th[k++] : s_.r_lo;
-  const double theta = th[k];
-  Isometry3d T = Isometry3d::Identity();
-  T.translation() = Vector3d(r, 0.0, axisHeightOf(h));
-  return F_ * rot(2, th[0]) * T * A_ * rot(2, theta) * L_inv_;
+  // F Rz(ψ) T(r, 0, z) A_σ Rz(θ) L⁻¹, composed as poseWithTail composes it: each Rz turns two
+  // columns, and T and A_σ (no translation) need no product of their own. The report's motions
+  // take two poses a parameter; the product of six transforms was most of their cost.
+  const Matrix3d outer = outerRotation(th[0]);
+  const double c = std::cos(th[k]), s = std::sin(th[k]);
+  Matrix3d spin;
+  spin << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  Isometry3d Y = Isometry3d::Identity();
+  Y.linear() = outer * (A_.linear() * (spin * L_inv_.linear()));
+  Y.translation() = F_.translation() +
+                    outer * (Vector3d(r, 0.0, axisHeightOf(h)) +
+                             A_.linear() * (spin * L_inv_.translation()));
+  return Y;
 }
 
 Params RadialGraspManifold::project(const Isometry3d& X) const {
