@@ -74,8 +74,8 @@ class Writer {
   void integerOrNull(int v) { v >= 0 ? integer(v) : null(); }
   // The shortest text that reads back as exactly v (std::to_chars's, shortest_double.hpp), with
   // ".0" when it would look like an integer: every reader then takes it as a double (simdjson
-  // does not refuse 21 digits as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling (ResultFormat).
-  // Non-finite: null.
+  // does not refuse 21 digits as too wide an integer, -0.0 keeps its sign). Or nlohmann's spelling
+  // (ResultFormat). Non-finite: null.
   void number(double v) {
     if (!std::isfinite(v)) return null();
     element();
@@ -252,8 +252,7 @@ void writeNearest(Writer& w, const NearestPose& n, int dof, const Units& u) {
   w.endObject();
 }
 
-void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int dof,
-                    const Units& u) {
+void writeCollision(Writer& w, const Report& r, const CollisionReport& c, int dof, const Units& u) {
   w.beginObject();
   w.key("checked_against");
   w.list(r.checked_against.size(), [&](std::size_t i) { w.string(r.checked_against[i]); });

@@ -28,27 +28,27 @@ void eightDigits(char* at, std::uint32_t d) {
   fourDigits(at + 4, d % 10000);
 }
 
-// How many decimal digits d > 0 has (0 < d < 10^19): log10 from the bit length, one compare.
+// How many decimal digits d has, for 0 < d < 10^17 (a shortest significand: at most 57 bits, so
+// the guess below is at most 17): log10 from the bit length, then one compare.
 int digitCount(std::uint64_t d) {
-  static constexpr std::uint64_t kPowers[] = {1,
-                                              10,
-                                              100,
-                                              1000,
-                                              10000,
-                                              100000,
-                                              1000000,
-                                              10000000,
-                                              100000000,
-                                              1000000000,
-                                              10000000000,
-                                              100000000000,
-                                              1000000000000,
-                                              10000000000000,
-                                              100000000000000,
-                                              1000000000000000,
-                                              10000000000000000,
-                                              100000000000000000,
-                                              1000000000000000000};
+  static constexpr std::uint64_t kPowers[18] = {1,
+                                                10,
+                                                100,
+                                                1000,
+                                                10000,
+                                                100000,
+                                                1000000,
+                                                10000000,
+                                                100000000,
+                                                1000000000,
+                                                10000000000,
+                                                100000000000,
+                                                1000000000000,
+                                                10000000000000,
+                                                100000000000000,
+                                                1000000000000000,
+                                                10000000000000000,
+                                                100000000000000000};
   const int guess = ((64 - __builtin_clzll(d)) * 1233) >> 12;  // 1233/4096 ≈ log10(2)
   return guess + (d >= kPowers[guess] ? 1 : 0);
 }

@@ -63,9 +63,8 @@ Isometry3d RadialGraspManifold::pose(const Params& th) const {
   spin << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
   Isometry3d Y = Isometry3d::Identity();
   Y.linear() = outer * (A_.linear() * (spin * L_inv_.linear()));
-  Y.translation() = F_.translation() +
-                    outer * (Vector3d(r, 0.0, axisHeightOf(h)) +
-                             A_.linear() * (spin * L_inv_.translation()));
+  Y.translation() = F_.translation() + outer * (Vector3d(r, 0.0, axisHeightOf(h)) +
+                                                A_.linear() * (spin * L_inv_.translation()));
   return Y;
 }
 

@@ -3,6 +3,8 @@
 // random values over the magnitudes a result holds, integers, powers of ten and of two with their
 // neighbours (where the fixed and the scientific forms trade places), subnormals and the extremes.
 // The buffer is exactly the 40 bytes the writer may use, so a sanitizer build sees any overrun.
+#include "shortest_double.hpp"
+
 #include <gtest/gtest.h>
 
 #include <charconv>
@@ -12,8 +14,6 @@
 #include <limits>
 #include <random>
 #include <string>
-
-#include "shortest_double.hpp"
 
 namespace relpos::detail {
 namespace {
@@ -51,11 +51,11 @@ TEST(ShortestDouble, SpellsEveryDoubleAsToChars) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> decade(-25, 20);
   for (int i = 0; i < 200000; ++i) {
-    c.check(unit(g));                                      // a quaternion's coordinate
-    c.check(unit(g) * std::pow(10.0, decade(g)));          // lengths of any scale
-    c.check(std::round(unit(g) * 1e6));                    // integers: fixed, with .0 added later
-    c.check(std::round(unit(g) * 1e16));                   // up to and past 2^53
-    c.check(std::round(unit(g) * 1e6) * 1e-3);             // millimetres in metres
+    c.check(unit(g));                                     // a quaternion's coordinate
+    c.check(unit(g) * std::pow(10.0, decade(g)));         // lengths of any scale
+    c.check(std::round(unit(g) * 1e6));                   // integers: fixed, with .0 added later
+    c.check(std::round(unit(g) * 1e16));                  // up to and past 2^53
+    c.check(std::round(unit(g) * 1e6) * 1e-3);            // millimetres in metres
     c.check(std::ldexp(std::round(unit(g) * 1e4), -20));  // short binary fractions
   }
   for (int e = -330; e <= 310; ++e) {
@@ -73,8 +73,8 @@ TEST(ShortestDouble, SpellsEveryDoubleAsToChars) {
   for (double v : {0.0, -0.0, 9007199254740991.0, 9007199254740992.0, -9007199254740993.0,
                    std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(),
                    std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
-                   std::numeric_limits<double>::epsilon(), 3.141592653589793, 1e-7, 1e5, 1e21,
-                   1e22, 1e23, 123456789012345680000.0, 0.0001, 0.00001})
+                   std::numeric_limits<double>::epsilon(), 3.141592653589793, 1e-7, 1e5, 1e21, 1e22,
+                   1e23, 123456789012345680000.0, 0.0001, 0.00001})
     c.check(v);
   EXPECT_EQ(c.differ, 0) << "of " << c.checked;
   EXPECT_GT(c.checked, 1500000);
