@@ -2,6 +2,7 @@
 // σ_m = ∠(u_m, v_m) and σ_f = ∠(u_f, v_f). The rows handled here are those that reduce the pair
 // to parallelisms (via the vectors s± of App. II) or prove it redundant or incompatible; the
 // general pair is left to the two-angle rotation of App. III-D.
+#include <algorithm>
 #include <cmath>
 
 #include "family.hpp"
@@ -134,8 +135,13 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
     b.m = a.m, b.err += sm, in_err += sm;
     tol = given.widened(in_err);
     double sf = angleBetween(a.f, b.f);
-    if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = 0;
+    if (sf >= kPi - tol.angle) b.f = -b.f, b.a = kPi - b.a, sf = kPi - sf;
     if (sf <= tol.angle) {
+      // Likewise a's fixed vector taken for b's: a direction at α from one and β from the other,
+      // σ_f apart, exists wherever |α − β| ≤ σ_f (the angles 1e-9 apart from fixed vectors 1e-9
+      // apart were found incompatible, a pose meeting both to 1e-15 notwithstanding).
+      b.err += sf, in_err += sf;
+      tol = given.widened(in_err);
       // Keep the one known best: the solution then meets the other within its uncertainty.
       if (tol.equalAngle(a.a, b.a)) {
         out.fire(kSameVector);
@@ -184,8 +190,11 @@ void twoAngles(const Fundamental& fa, const Fundamental& fb, const Tolerance& gi
   const Ang& ang = pa ? b : a;
   const double sf = angleBetween(par.f, ang.f);
   if (sf <= tol.angle || sf >= kPi - tol.angle) {
-    // v_f ∥ ±u_f: the angle is fixed by the parallelism alone.
-    return parallelismFixes(sf <= tol.angle ? sm : kPi - sm, ang.a, pa, tol, out);
+    // v_f ∥ ±u_f: the angle is fixed by the parallelism alone — to within the angle between them,
+    // which joins the uncertainty as above.
+    const double off = std::min(sf, kPi - sf);
+    return parallelismFixes(sf <= tol.angle ? sm : kPi - sm, ang.a, pa, given.widened(in_err + off),
+                            out);
   }
   Vector3d s[2];
   double err = 0.0, gain = 1.0;

@@ -78,9 +78,9 @@ TEST(AngleAngle, AParallelismAndAnAngleTurnAboutTheParallelAxis) {
 // a pose met every constraint (random 5-constraint problem, issue 16).
 TEST(AngleAngle, ATangentMeetingOfUncertainConesCarriesTheMeetingsDistance) {
   const Vector3d x = Vector3d::UnitX();
-  const Vector3d v(0.5, std::sqrt(0.75), 0.0);         // 60° from x
-  const Vector3d m(std::sqrt(0.75), 0.5, 0.0);         // the mobile vector, 30° from x
-  const double beta = 30 * kDeg + 1.75e-7;             // cones 60° apart, 30° and 30° + δ wide
+  const Vector3d v(0.5, std::sqrt(0.75), 0.0);  // 60° from x
+  const Vector3d m(std::sqrt(0.75), 0.5, 0.0);  // the mobile vector, 30° from x
+  const double beta = 30 * kDeg + 1.75e-7;      // cones 60° apart, 30° and 30° + δ wide
   Fundamental parallel = Fundamental::angle(x, x, 0.0, 1);
   parallel.err = 2.5e-8;
   const Fundamental angle = Fundamental::angle(m, v, beta, 2);
@@ -97,6 +97,28 @@ TEST(AngleAngle, ATangentMeetingOfUncertainConesCarriesTheMeetingsDistance) {
     for (const Fundamental& f : out.alternatives[0])
       EXPECT_LE(plugins::fundamentalResidual(f, X), f.err + 1e-12) << sign;
   }
+}
+
+// Fixed vectors within the angle tolerance of each other are one vector to the rule, but the
+// angles read from them may differ by up to their angle besides the tolerance. A mobile vector m
+// at 1 rad from x and at β = 1 − 1.0000001e-9 from x' (x turned 1e-9 toward m) is met by a
+// direction between them to 1e-16; taken as one fixed vector without that, the pair was found
+// incompatible (issue 18's seed hunt: a pose meeting both to 1e-15 declared inconsistent). Also
+// through a parallelism x ∥ x, which fixes m's angle from x' at 1 rad the same way.
+TEST(AngleAngle, AnglesFromFixedVectorsATolerancePartAreNotIncompatible) {
+  const Vector3d x = Vector3d::UnitX(), x2(std::cos(1e-9), std::sin(1e-9), 0.0);
+  const Vector3d m(std::cos(1.0), std::sin(1.0), 0.0);
+  const double beta = 1.0 - 1.0000001e-9;
+  std::string fired;
+  RuleOutput out =
+      applyRule("angle+angle",
+                {Fundamental::angle(m, x, 1.0, 1), Fundamental::angle(m, x2, beta, 2)}, &fired);
+  EXPECT_EQ(fired, "angle+angle/same-vector");
+  EXPECT_NE(out.verdict, RuleVerdict::kIncompatible);
+  out = applyRule("angle+angle",
+                  {Fundamental::angle(x, x, 0.0, 1), Fundamental::angle(m, x2, beta, 2)}, &fired);
+  EXPECT_EQ(fired, "angle+angle/parallel-fixes-angle");
+  EXPECT_NE(out.verdict, RuleVerdict::kIncompatible);
 }
 
 }  // namespace

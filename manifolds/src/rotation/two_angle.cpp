@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "relpos/manifolds/rotation/one_parallel.hpp"
+
 namespace relpos::manifolds::rotation {
 
 TwoAngle::TwoAngle(const OneAngle& first, const Vector3d& v_m, const Vector3d& v_f, double cos_beta)
@@ -49,8 +51,24 @@ void TwoAngle::project(const Matrix3d& R, double* t) const {
     double c = cost(phi);
     if (c < best_c) best_c = c, best = phi;
   }
+  // The azimuth of R u_m about u_f from R0 u_m's (OneAngle::project's φ): exactly R's φ when R is
+  // on the branch, and near the projection beside it, where a minimum narrower than the scan's
+  // steps (φ near an end of its range, or where θ(φ) turns steeply) lay between two of them and
+  // the scan settled 0.5 rad away.
+  const Vector3d w0 = R0 * u_m, x = R * u_m;
+  const Vector3d w0p = w0 - w0.dot(u_f) * u_f, xp = x - x.dot(u_f) * u_f;
+  if (xp.norm() >= kUnitRounding && w0p.norm() >= kUnitRounding) {
+    double phi = std::atan2(w0p.cross(xp).dot(u_f), w0p.dot(xp));
+    // (On a range beyond ±π, [0.28, 6.54], the same azimuth a whole turn on.)
+    if (!phi_periodic) phi = ontoArc(phi, phi_lo, phi_hi);
+    const double c = cost(phi);
+    if (c < best_c) best_c = c, best = phi;
+  }
+  // Golden sections over the scan's steps about the best; over a periodic range across its ends
+  // too (the best just past -π is as near +π, and the scan may find either).
   double h = (phi_hi - phi_lo) / n;
-  double a = std::max(phi_lo, best - h), b = std::min(phi_hi, best + h);
+  double a = best - h, b = best + h;
+  if (!phi_periodic) a = std::max(phi_lo, a), b = std::min(phi_hi, b);
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int it = 0; it < 60; ++it) {
     double x1 = b - g * (b - a), x2 = a + g * (b - a);
@@ -60,6 +78,7 @@ void TwoAngle::project(const Matrix3d& R, double* t) const {
       a = x1;
   }
   double m = 0.5 * (a + b);
+  if (phi_periodic) m = std::remainder(m, 2 * kPi);
   t[0] = cost(m) < best_c ? m : best;
 }
 
