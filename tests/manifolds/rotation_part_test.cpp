@@ -86,16 +86,24 @@ TEST(RotationPart, AngleRangeKeepsTheAngleWithinItsBoundsAndProjectsBack) {
   }
 }
 
+// Two angle constraints on random vectors, at the angles a random rotation makes (so that the
+// set is not empty); *alpha and *beta receive them.
+rotation::TwoAngle randomTwoAngle(Rng& rng, double* alpha, double* beta) {
+  const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
+  const Matrix3d R_true = rng.pose().linear();
+  *alpha = angleBetween(R_true * um, uf), *beta = angleBetween(R_true * vm, vf);
+  return rotation::TwoAngle(rotation::OneAngle(um, uf, *alpha), vm, vf, std::cos(*beta));
+}
+
 TEST(RotationPart, TwoAngleRotationsMeetBothAngles) {
   Rng rng(5);
   int checked = 0;
   for (int i = 0; i < 200; ++i) {
-    const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
-    // Angles some rotation makes, so that the set is not empty.
-    const Matrix3d R_true = rng.pose().linear();
-    const double alpha = angleBetween(R_true * um, uf), beta = angleBetween(R_true * vm, vf);
+    double alpha, beta;
+    const rotation::TwoAngle shape = randomTwoAngle(rng, &alpha, &beta);
+    const Vector3d &um = shape.u_m, &uf = shape.u_f, &vm = shape.v_m, &vf = shape.v_f;
     for (double sign : {1.0, -1.0}) {
-      rotation::TwoAngle two(rotation::OneAngle(um, uf, alpha), vm, vf, std::cos(beta));
+      rotation::TwoAngle two = shape;
       two.sign = sign;
       const RotationPart r = two;
       for (int k = 0; k < 10; ++k) {
@@ -119,10 +127,8 @@ TEST(RotationPart, TwoAngleProjectsItsOwnRotationsBack) {
   Rng rng(23);
   int checked = 0;
   for (int i = 0; i < 300; ++i) {
-    const Vector3d um = rng.unit(), uf = rng.unit(), vm = rng.unit(), vf = rng.unit();
-    const Matrix3d R_true = rng.pose().linear();
-    const double alpha = angleBetween(R_true * um, uf), beta = angleBetween(R_true * vm, vf);
-    rotation::TwoAngle two(rotation::OneAngle(um, uf, alpha), vm, vf, std::cos(beta));
+    double alpha, beta;
+    rotation::TwoAngle two = randomTwoAngle(rng, &alpha, &beta);
     two.sign = i % 2 == 0 ? 1.0 : -1.0;
     if (i % 3 == 1) {  // a range reaching beyond ±π
       two.phi_lo = rng.uniform(-4.0, 2.0);

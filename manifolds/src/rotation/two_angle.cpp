@@ -51,14 +51,12 @@ void TwoAngle::project(const Matrix3d& R, double* t) const {
     double c = cost(phi);
     if (c < best_c) best_c = c, best = phi;
   }
-  // The azimuth of R u_m about u_f from R0 u_m's (OneAngle::project's φ): exactly R's φ when R is
-  // on the branch, and near the projection beside it, where a minimum narrower than the scan's
-  // steps (φ near an end of its range, or where θ(φ) turns steeply) lay between two of them and
-  // the scan settled 0.5 rad away.
-  const Vector3d w0 = R0 * u_m, x = R * u_m;
-  const Vector3d w0p = w0 - w0.dot(u_f) * u_f, xp = x - x.dot(u_f) * u_f;
-  if (xp.norm() >= kUnitRounding && w0p.norm() >= kUnitRounding) {
-    double phi = std::atan2(w0p.cross(xp).dot(u_f), w0p.dot(xp));
+  // The first cone's φ for R (as OneAngle::project finds it): exactly R's φ when R is on the
+  // branch, and near the projection beside it, where a minimum narrower than the scan's steps (φ
+  // near an end of its range, or where θ(φ) turns steeply) lay between two of them and the scan
+  // settled 0.5 rad away.
+  double phi = coneAzimuth(u_m, u_f, R0, R);
+  if (!std::isnan(phi)) {
     // (On a range beyond ±π, [0.28, 6.54], the same azimuth a whole turn on.)
     if (!phi_periodic) phi = ontoArc(phi, phi_lo, phi_hi);
     const double c = cost(phi);

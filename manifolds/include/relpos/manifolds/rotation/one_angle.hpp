@@ -24,4 +24,8 @@ struct OneAngle : ShapeBase<OneAngle> {
   Matrix3d spinBase(const double* theta) const;
 };
 
+// The turn φ about u_f that puts R0 u_m at the azimuth of R u_m (both taken across u_f): a cone's
+// φ for R, exact for R on the cone. NaN where either vector lies along u_f (no azimuth).
+double coneAzimuth(const Vector3d& u_m, const Vector3d& u_f, const Matrix3d& R0, const Matrix3d& R);
+
 }  // namespace relpos::manifolds::rotation
