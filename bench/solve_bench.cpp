@@ -2,8 +2,8 @@
 // two-constraint cases, PMF's assembly task), on data/bench (five constraints, 16 branches) and
 // on the engineers' tasks of data/tasks (closed forms, and charts where the rules leave them:
 // the label says which),
-// into a reused Workspace and Solution as a control loop would call it; and the nearest-pose
-// query on the worked example.
+// into a reused Workspace and Solution as a control loop would call it; and the nearest pose of
+// every branch of each (`nearest/…`), to the mobile object's pose in the file.
 //   build/bench/relpos_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -38,6 +38,16 @@ void BM_Solve(benchmark::State& state, const std::string& file) {
   state.SetLabel(std::string(relpos::toString(s.status)) + (numeric ? " (numeric stage)" : ""));
 }
 
+// The nearest pose of every branch of a solved example, to its mobile object's current pose.
+void BM_NearestOfEveryBranch(benchmark::State& state, const std::string& file) {
+  const relpos::Problem p = load(file);
+  const relpos::Solution s = relpos::solve(p, relpos::builtinRegistry());
+  for (auto _ : state)
+    for (const auto& b : s.branches)
+      benchmark::DoNotOptimize(relpos::nearestOnBranch(b, p.mobile.pose).distance);
+  state.counters["branches"] = static_cast<double>(s.branches.size());
+}
+
 void BM_NearestWorkedExample(benchmark::State& state) {
   const relpos::Problem p = load(RELPOS_DATA_DIR "/examples/pmf-simple-example.json");
   relpos::Solution s = relpos::solve(p, relpos::builtinRegistry());
@@ -50,9 +60,8 @@ BENCHMARK(BM_NearestWorkedExample);
 
 int registerExamples() {
   std::vector<std::string> files;
-  for (const char* dir :
-       {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench", RELPOS_DATA_DIR "/scenarios",
-        RELPOS_DATA_DIR "/tasks"})
+  for (const char* dir : {RELPOS_DATA_DIR "/examples", RELPOS_DATA_DIR "/bench",
+                          RELPOS_DATA_DIR "/scenarios", RELPOS_DATA_DIR "/tasks"})
     for (const auto& e : std::filesystem::directory_iterator(dir))
       if (e.path().extension() == ".json" && e.path().filename() != "expected.json")
         files.push_back(e.path().string());
@@ -60,6 +69,9 @@ int registerExamples() {
   for (const auto& f : files)
     benchmark::RegisterBenchmark(("solve/" + std::filesystem::path(f).stem().string()).c_str(),
                                  BM_Solve, f);
+  for (const auto& f : files)
+    benchmark::RegisterBenchmark(("nearest/" + std::filesystem::path(f).stem().string()).c_str(),
+                                 BM_NearestOfEveryBranch, f);
   return 0;
 }
 const int kRegistered = registerExamples();

@@ -14,6 +14,10 @@ namespace relpos::detail {
 // name. `call` names the method running, `type` the manifold's type name, should one throw.
 std::string unusable(const ManifoldHolder& holder, const char*& type, const char*& call);
 
+// How many tolerances a branch may break a constraint by at its reference parameters (rounding
+// the rules' first-order allowances do not carry) before the last check calls it a breakdown.
+inline constexpr double kBreakdownTolerances = 10.0;
+
 // The last check (docs/spec.md §6.5): one pose of every branch of a solved answer against every
 // input constraint; a breakdown makes the answer `unhandled` with the reason.
 void checkBranches(const Problem& problem, const Registry& registry, const Tolerance& tol,

@@ -33,6 +33,9 @@ class Workspace {
   std::vector<ConstraintSet> pending;  // constraint sets still to combine (the branch stack)
   RuleOutput rule_out;
   std::vector<std::string> problems;  // value checks of constraints built in code
+  // The answer to the same problem with every tolerance 10 times wider, which an `inconsistent`
+  // one is held against (docs/spec.md §6.4): kept here so that solving again allocates nothing.
+  Solution widened;
 };
 
 void solve(const Problem& problem, const Registry& registry, const SolverOptions& options,
