@@ -26,6 +26,14 @@ double Manifold::nearestRotation(const Isometry3d& X, Params* theta) const {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+bool Manifold::nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) const {
+  (void)X;
+  (void)i;
+  (void)lo;
+  (void)hi;
+  return false;
+}
+
 bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
   Isometry3d Y = pose(project(X));
   double scale = std::max(1.0, X.translation().norm());
@@ -315,7 +323,15 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
     // Brent's bracket holds a kink as well as a smooth minimum: what is left to a search at a
     // kink is Brent's last interval, a few times its tolerance (2^-26).
     best = proj, best_d = proj_d, best_step = 1e-6, converged = true;
-    settled = detail::nearestAlongOneAngle(m, X, par, one, &best, &best_d);
+    // Where the manifold knows the arc the nearest angle lies on, that arc is searched as bounds.
+    Parameter searched[kMaxDof];
+    std::copy(par, par + n, searched);
+    int arc_i = -1;
+    double lo = 0.0, hi = 0.0;
+    const bool arc = par[one].periodic && m.nearestArc(X, &arc_i, &lo, &hi) && arc_i == one &&
+                     lo < hi && hi - lo < 2 * kPi;
+    if (arc) searched[one].min = lo, searched[one].max = hi, searched[one].periodic = false;
+    settled = detail::nearestAlongOneAngle(m, X, searched, one, arc, &best, &best_d);
   } else {
     converged = searchFromProjection(m, X, par, proj, proj_d, &best, &best_d, &best_step);
   }

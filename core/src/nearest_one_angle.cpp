@@ -25,9 +25,13 @@ bool searchesOneBoundedAngle(const Manifold& m, const Parameter* par, int* i) {
 }
 
 bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Parameter* par, int i,
-                          Params* best, double* best_d) {
+                          bool arc, Params* best, double* best_d) {
   const unsigned fixed = m.closedFormParams();
   const Parameter& p = par[i];
+  // On an arc, the projection's angle and the kink's (each an atan2's) may lie a turn away.
+  const double mid = 0.5 * (p.min + p.max);
+  auto onTurn = [&](double v) { return arc ? mid + std::remainder(v - mid, 2 * kPi) : v; };
+  (*best)[i] = onTurn((*best)[i]);
   // Every pose weighed is kept if nearest, so Brent's answer needs no evaluation of its own. NaN (a
   // closed form that broke down) counts as farthest: it never wins a comparison.
   auto distanceAt = [&](double v) {
@@ -39,14 +43,20 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
     return d;
   };
   // Twelve samples, 30° apart over a turn (periodic: from the projection, the first sample) or
-  // evenly over the bounds, both ends included (a bound is where a ranged minimum often lies).
+  // evenly over the bounds, both ends included (a bound is where a ranged minimum often lies); an
+  // arc at most 15° apart, its ends included (at 20° and 30°, two basins 0.06–0.09 rad apart,
+  // where a grasp's radius switches bounds, fell between two samples, and Brent's bracket held
+  // the farther one: the turn's samples had happened to catch the nearer).
   constexpr int kSamples = 12;
+  const int n =
+      arc ? std::clamp(static_cast<int>(std::ceil((p.max - p.min) / (kPi / 12))) + 1, 3, kSamples)
+          : kSamples;
   const double proj = (*best)[i], proj_d = *best_d;
-  const double step = p.periodic ? 2 * kPi / kSamples : (p.max - p.min) / (kSamples - 1);
+  const double step = p.periodic ? 2 * kPi / kSamples : (p.max - p.min) / (n - 1);
   double v[kSamples], d[kSamples];
-  for (int s = 0; s < kSamples; ++s) {
-    // The last sample is the upper bound itself, not min + 11·step (a few ulps short of it).
-    v[s] = p.periodic ? proj + s * step : (s + 1 < kSamples ? p.min + s * step : p.max);
+  for (int s = 0; s < n; ++s) {
+    // The last sample is the upper bound itself, not min + (n − 1)·step (a few ulps short of it).
+    v[s] = p.periodic ? proj + s * step : (s + 1 < n ? p.min + s * step : p.max);
     d[s] = p.periodic && s == 0 ? proj_d : distanceAt(v[s]);
   }
   // Brent (a kink is the caller's to settle), from the sample, over the two steps
@@ -77,10 +87,10 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   // step. Out of reach there, no point of the branch is a kink: no certificate is tried at all.
   Params kink = *best;
   const double kink_angle = m.nearestRotation(X, &kink);
-  const bool out_of_reach = kink_angle > 2 * kKinkReach;  // (NaN, not known: false)
+  const bool out_of_reach = kink_angle > 2 * kKinkReach;     // (NaN, not known: false)
   double kink_v = std::numeric_limits<double>::quiet_NaN();  // the kink settled there, if one
   if (kink_angle <= 2 * kKinkReach) {
-    const double at = clampParam(p, kink[i]), at_d = distanceAt(at);
+    const double at = clampParam(p, onTurn(kink[i])), at_d = distanceAt(at);
     if (at_d < std::numeric_limits<double>::infinity()) settleFrom(at, at_d, &kink_v);
   }
   auto refineAround = [&](double centre, double centre_d) {
@@ -94,9 +104,9 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
     brentMinimumFrom(distanceAt, lo, hi, centre, centre_d, kTolerance, 60);
   };
   int first = -1, second = -1;
-  for (int s = 0; s < kSamples; ++s) {
-    const bool has_before = p.periodic || s > 0, has_after = p.periodic || s + 1 < kSamples;
-    const double before = d[(s + kSamples - 1) % kSamples], after = d[(s + 1) % kSamples];
+  for (int s = 0; s < n; ++s) {
+    const bool has_before = p.periodic || s > 0, has_after = p.periodic || s + 1 < n;
+    const double before = d[(s + n - 1) % n], after = d[(s + 1) % n];
     if ((has_before && before < d[s]) || (has_after && after < d[s])) continue;
     if (first < 0 || d[s] < d[first]) {
       second = first, first = s;
@@ -105,7 +115,9 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
     }
   }
   // A bounded angle's projection lies off the samples: its basin is a candidate of its own.
-  const bool proj_off_lattice = !p.periodic && (first < 0 || proj_d < d[first]);
+  // (On an arc, a projection off it is no candidate: the nearest pose is on it.)
+  const bool proj_off_lattice =
+      !p.periodic && (first < 0 || proj_d < d[first]) && (!arc || (proj >= p.min && proj <= p.max));
   if (first >= 0) refineAround(v[first], d[first]);
   if (proj_off_lattice)
     refineAround(proj, proj_d);

@@ -175,6 +175,37 @@ double RadialGraspManifold::nearestRotation(const Isometry3d& X, Params* th) con
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
+bool RadialGraspManifold::nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) const {
+  if (!spin_closed_) return false;
+  // The point searched at ψ is F Rz(ψ) w over the rectangle of w = (r, 0, z) + v, v the mobile
+  // origin from the fingertip (placeTip): its distance to X's origin x (axis frame) falls as
+  // w_x ρx cos(ψ − ψx) rises, nondecreasing in |ψ − ψx| while w_x = r + v_x ≥ 0 over the radii
+  // (and w_y = 0), in |ψ − ψx − π| while w_x ≤ 0 over them (the origin beyond the axis).
+  const Vector3d v = A_.linear() * L_inv_.translation();
+  const bool outside = s_.r_lo + v.x() >= 0.0, beyond = s_.r_hi + v.x() <= 0.0;
+  if (!(outside || beyond) || !(std::abs(v.y()) <= kUnitRounding * (1.0 + v.norm()))) return false;
+  const Matrix3d& F = F_.linear();
+  const Vector3d x = F.transpose() * (X.translation() - F_.translation());
+  // The approach directions: F Rz(ψ) c for the branch, b for X (both in the axis frame below);
+  // their cosine is c_z b_z + ρc ρb cos(ψ + φc − φb).
+  const Vector3d b = F.transpose() * (X.linear() * L_inv_.linear().row(2).transpose());
+  const Vector3d c = A_.linear().col(2);
+  // Either term (nearly) constant over ψ — X's origin on the axis, its approach along it — leaves
+  // the other alone to place the minimum, where rounding decides: the whole turn is searched.
+  const double rho_x = std::hypot(x.x(), x.y()), rho_b = std::hypot(b.x(), b.y());
+  if (!(rho_x > 1e-9 * (1.0 + x.norm())) || !(rho_b > 1e-9) || !(std::hypot(c.x(), c.y()) > 0.5))
+    return false;
+  const double psi_x = std::atan2(x.y(), x.x()) + (outside ? 0.0 : kPi);
+  const double psi_b = std::atan2(b.y(), b.x()) - std::atan2(c.y(), c.x());
+  const double apart = std::remainder(psi_b - psi_x, 2 * kPi);
+  // (A margin for the rounding of ψx and ψb, and of w_y's few ulps.)
+  constexpr double kMargin = 1e-6;
+  *i = 0;
+  *lo = std::min(psi_x, psi_x + apart) - kMargin;
+  *hi = std::max(psi_x, psi_x + apart) + kMargin;
+  return true;
+}
+
 bool RadialGraspManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
   RadialGraspSpec moved = s_;
   moved.axis_point += offset_W;

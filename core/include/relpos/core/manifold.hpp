@@ -95,6 +95,13 @@ class Manifold {
   // X's rotation is out of the branch's reach. (After searchDistance: added with plugin ABI 9.)
   virtual double nearestRotation(const Isometry3d& X, Params* theta) const;
 
+  // Where the nearest pose's one searched angle is known to lie on an arc, whatever its other
+  // parameters: true with that parameter's index in *i and the arc [*lo, *hi] (lo < hi <
+  // lo + 2π; a periodic parameter's values count modulo 2π). The search then samples that arc
+  // alone, more finely than a whole turn and in no more poses. False (the default) where
+  // there is no such arc. (After nearestRotation: added with plugin ABI 10.)
+  virtual bool nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) const;
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };

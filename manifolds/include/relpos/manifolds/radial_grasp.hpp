@@ -47,6 +47,13 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   // With the spin closed form: ψ turns the approach direction about the axis, and the nearest
   // rotation is where it comes nearest X's approach direction (a turn's closed form).
   double nearestRotation(const Isometry3d& X, Params* theta) const override;
+  // With the spin closed form, the distance searched at ψ is f(|ψ − ψx|) + g(|ψ − ψb|) in
+  // circular distances, both nondecreasing: the fingertip's distance to X's over the radius ×
+  // height rectangle turned to ψ (ψx: X's origin's azimuth about the axis), and the angle
+  // between the approach directions (ψb: where they come nearest). Any ψ is then no nearer than
+  // the point of the shorter arc from ψx to ψb as far from ψx (the circle's triangle inequality):
+  // the nearest ψ lies on that arc.
+  bool nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) const override;
   std::string describe() const override;
   bool rebase(const Vector3d& offset_W, const Vector3d& offset_M) override;
 
