@@ -20,6 +20,11 @@ RadialGraspManifold::RadialGraspManifold(const RadialGraspSpec& spec)
   // The mobile origin in the approach line's frame: on its z axis, Rz(θ) leaves it in place.
   const Vector3d o = L_inv_.translation();
   spin_closed_ = o.head<2>().norm() <= kUnitRounding * (1.0 + o.norm());
+  origin_from_tip_ = A_.linear() * o;
+  if (spec.has_height) {
+    height_gain_ = spec.axis_dir.dot(spec.plane_normal);
+    height_offset_ = (spec.axis_point - spec.plane_point).dot(spec.plane_normal);
+  }
 }
 
 int RadialGraspManifold::dof() const { return 2 + rRanged() + hFree(); }
@@ -40,14 +45,12 @@ Parameter RadialGraspManifold::parameter(int i) const {
 double RadialGraspManifold::axisHeightOf(double h) const {
   if (!s_.has_height) return h;
   // (a + z d − q)·n = h along the axis frame's z.
-  return (h - (s_.axis_point - s_.plane_point).dot(s_.plane_normal)) /
-         s_.axis_dir.dot(s_.plane_normal);
+  return (h - height_offset_) / height_gain_;
 }
 
 double RadialGraspManifold::planeValueOf(double z) const {
   if (!s_.has_height) return z;
-  return z * s_.axis_dir.dot(s_.plane_normal) +
-         (s_.axis_point - s_.plane_point).dot(s_.plane_normal);
+  return z * height_gain_ + height_offset_;
 }
 
 Isometry3d RadialGraspManifold::pose(const Params& th) const {
@@ -154,7 +157,7 @@ double RadialGraspManifold::searchDistance(const Isometry3d& X, Params* th) cons
   const Matrix3d outer = outerRotation((*th)[0]);
   const Vector3d a = outer * A_.linear().col(2);
   const Vector3d b = X.linear() * L_inv_.linear().row(2).transpose();
-  const Vector3d T = placeTip(X, outer, A_.linear() * L_inv_.translation(), th);
+  const Vector3d T = placeTip(X, outer, origin_from_tip_, th);
   return (T - X.translation()).norm() + std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
@@ -181,7 +184,7 @@ bool RadialGraspManifold::nearestArc(const Isometry3d& X, int* i, double* lo, do
   // origin from the fingertip (placeTip): its distance to X's origin x (axis frame) falls as
   // w_x ρx cos(ψ − ψx) rises, nondecreasing in |ψ − ψx| while w_x = r + v_x ≥ 0 over the radii
   // (and w_y = 0), in |ψ − ψx − π| while w_x ≤ 0 over them (the origin beyond the axis).
-  const Vector3d v = A_.linear() * L_inv_.translation();
+  const Vector3d& v = origin_from_tip_;
   const bool outside = s_.r_lo + v.x() >= 0.0, beyond = s_.r_hi + v.x() <= 0.0;
   if (!(outside || beyond) || !(std::abs(v.y()) <= kUnitRounding * (1.0 + v.norm()))) return false;
   const Matrix3d& F = F_.linear();

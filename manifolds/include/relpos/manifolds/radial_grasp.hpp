@@ -72,6 +72,11 @@ class RadialGraspManifold final : public MixedManifoldBase<RadialGraspManifold> 
   RadialGraspSpec s_;
   Isometry3d F_, L_inv_, A_;
   bool spin_closed_ = false;
+  // What every pose the search weighs would recompute: the mobile origin from the fingertip in
+  // the frame after A_σ (A_σ L⁻¹'s translation, on the approach line when the spin is closed
+  // form), and the height's plane value as gain · z + offset.
+  Vector3d origin_from_tip_ = Vector3d::Zero();
+  double height_gain_ = 1.0, height_offset_ = 0.0;
 };
 
 }  // namespace relpos::manifolds
