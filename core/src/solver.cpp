@@ -1,5 +1,6 @@
 #include "relpos/core/solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -635,6 +636,52 @@ namespace {
 // ten sizes away, where it differs by 1.6e-9 (a span angle 8e-9 rad off, 5e-9 allowed). The last
 // check lets a branch break a constraint by up to 10 tolerances (§6.5): a conflict that the same
 // rules no longer find with every tolerance that much wider is in doubt, and `unhandled`.
+// The least, over a pattern search of m's parameters from its reference ones, of the worst
+// violation of an input constraint (in tolerances): at most 60 rounds of two poses a parameter.
+double leastWorstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
+                           const Manifold& m) {
+  auto worstAt = [&](const Params& t) {
+    double worst = 0.0;
+    try {
+      const Isometry3d X = m.pose(t);
+      if (!X.matrix().allFinite()) return std::numeric_limits<double>::infinity();
+      for (const InputConstraint& c : problem.constraints) {
+        const ConstraintType* type = registry.constraintType(c.type);
+        if (!type || !type->violation) continue;
+        const double v = type->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X),
+                                         tol, type->context);
+        if (!(v <= worst)) worst = v;
+      }
+    } catch (...) {
+      return std::numeric_limits<double>::infinity();
+    }
+    return worst;
+  };
+  Params best = referenceParams(m);
+  double best_v = worstAt(best);
+  const int n = m.dof();
+  double step[kMaxDof];
+  for (int i = 0; i < n; ++i) {
+    const Parameter p = m.parameter(i);
+    const double width = p.max - p.min;
+    step[i] = std::isfinite(width) ? 0.25 * width : std::max(1.0, problem.lengthScale());
+  }
+  for (int round = 0; round < 60 && best_v > detail::kBreakdownTolerances; ++round) {
+    bool moved = false;
+    for (int i = 0; i < n; ++i)
+      for (double sign : {1.0, -1.0}) {
+        Params t = best;
+        const Parameter p = m.parameter(i);
+        t[i] = std::clamp(t[i] + sign * step[i], p.min, p.max);
+        const double v = worstAt(t);
+        if (v < best_v) best = t, best_v = v, moved = true;
+      }
+    if (!moved)
+      for (int i = 0; i < n; ++i) step[i] *= 0.5;
+  }
+  return best_v;
+}
+
 void doubtNarrowConflict(const Problem& problem, const Registry& registry,
                          const SolverOptions& options, const Tolerance& decided, Workspace& ws,
                          Solution& solution) {
@@ -647,11 +694,17 @@ void doubtNarrowConflict(const Problem& problem, const Registry& registry,
   Tolerance tol;
   if (!solveOnce(problem, registry, wide, true, ws, widely, tol))
     solveOnce(problem, registry, wide, false, ws, widely, tol);
-  // Held to the last check at the tolerance decided: a branch it would let through (every
-  // constraint within 10 tolerances at its reference parameters), not one of the wider
-  // problem's (a pose 2e-4 rad off where a distance 20 tolerances off is read through acos).
-  detail::checkBranches(problem, registry, decided, widely);
   if (widely.status != Status::kSolved) return;
+  // Held to the last check at the tolerance decided: a pose of a branch it would let through
+  // (every constraint within 10 tolerances), not one of the wider problem's (a pose 2e-4 rad
+  // off where a distance 20 tolerances off is read through acos). Sought along each branch from
+  // its reference parameters: near-parallel lines read as parallel meet the second line only
+  // where the contacts lie, far from there.
+  bool near = false;
+  for (const Branch& b : widely.branches)
+    near = near || leastWorstViolation(problem, registry, decided, *b.manifold) <=
+                       detail::kBreakdownTolerances;
+  if (!near) return;
   std::string which;
   for (int c : solution.conflicts) which += (which.empty() ? "" : ", ") + std::to_string(c);
   solution.status = Status::kUnhandled;

@@ -10,6 +10,7 @@
 #include "evaluator.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/solver.hpp"
+#include "relpos/io/spec_reader.hpp"
 
 namespace relpos::test {
 namespace {
@@ -125,6 +126,26 @@ TEST(NarrowConflict, NearlyParallelPlaneContactsAreNeverInconsistent) {
   // The premise: the known pose meets both contacts (the evaluator, written from the spec).
   ASSERT_LT(worstViolation(p, known), 1e-12);
   const Solution s = solve(p, builtinRegistry());
+  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+}
+
+// Another (offset 5092, "two line coincidences meeting at an angle"): lines 1e-9 rad from parallel
+// read as parallel, their separation where the problem is centred. The wider problem's branch
+// breaks the second coincidence by 28 tolerances at its reference parameters, where the lines
+// are 2 apart from the contacts; along the branch, where the contacts lie, it meets it: the
+// conflict is sought along each branch, not at one pose.
+TEST(NarrowConflict, NearlyParallelLineCoincidencesAreNeverInconsistent) {
+  const ParseResult r = parseSpec(
+      R"spec({"relpos": 1, "name": "degenerate-13", "units": {"angle": "rad"}, "fixed": {"name": "base", "pose": {"position": [-0.9561799448800243, -1.5156401315614558, 0.20808963833874605], "orientation": [-0.4245818749591102, 0.4165858692312691, 0.3325527103466732, 0.7318436580678389]}, "features": {"F1": {"line": {"point": [1.6272467001213875, -0.2820187432566747, 4.133697044792326], "direction": [-0.597662198950869, -0.7387767764119342, -0.3114623100466617]}}, "F3": {"line": {"point": [1.6544135351822886, -0.24843752058743956, 4.147854615886531], "direction": [-0.5976621984457071, -0.7387767770605967, -0.31146230947740916]}}, "f2": {"line": {"point": [0.30722618389823786, -2.258667748829062, 1.7387104034735765], "direction": [-0.3143442065133775, 0.943794025178759, -0.10217904808888623]}}}}, "mobile": {"name": "part", "pose": {"position": [1.4228090761127357, 1.8819549888360285, -1.7847718075884473], "orientation": [0.7554111798699776, 0.22846195083967588, -0.3478382624425454, 0.5061300519895344]}, "features": {"M0": {"line": {"point": [0.8853256583529054, 1.0894626984269475, -1.0126826534516775], "direction": [0.22815584884428924, 0.20108532427423984, -0.9526329833675014]}}, "M2": {"line": {"point": [0.8972240417461854, 1.0999493480218825, -1.0623626961629737], "direction": [0.2281558489843693, 0.2010853252357201, -0.9526329831309992]}}, "m2": {"line": {"point": [-0.6843855254854969, 0.5537207073980386, -0.8018114269629824], "direction": [-0.2909447759395885, 0.8032969657125276, -0.519677902388113]}}}}, "constraints": [{"type": "coincident", "fixed": "F1", "mobile": "M0", "orientation": "aligned"}, {"type": "coincident", "fixed": "F3", "mobile": "M2", "orientation": "aligned"}, {"type": "angle", "fixed": "f2", "mobile": "m2", "value": 2.795281019190247, "orientation": "aligned"}]})spec",
+      builtinRegistry());
+  ASSERT_TRUE(r.problem);
+  Isometry3d known = Isometry3d::Identity();
+  known.translation() = Vector3d(0.5469183190766085, 1.6601013017895174, -0.16272003754342057);
+  known.linear() = Eigen::Quaterniond(-0.35999658631447334, 0.6189838637568121, 0.6224883358224665,
+                                      0.3158634293735038)
+                       .toRotationMatrix();
+  ASSERT_LT(worstViolation(*r.problem, known), 1e-12);
+  const Solution s = solve(*r.problem, builtinRegistry());
   EXPECT_NE(s.status, Status::kInconsistent) << s.message;
 }
 
