@@ -629,13 +629,6 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
 
 namespace {
 
-// docs/spec.md §6.4: `inconsistent` only when certain. The rules decide within the tolerance plus
-// what each derived quantity is known to, and a reading they model too narrowly can find a
-// feasible problem inconsistent by a few tolerances: two plane contacts whose planes are 1e-9 rad
-// from parallel have their distance read where the problem is centred, while the contacts lie
-// ten sizes away, where it differs by 1.6e-9 (a span angle 8e-9 rad off, 5e-9 allowed). The last
-// check lets a branch break a constraint by up to 10 tolerances (§6.5): a conflict that the same
-// rules no longer find with every tolerance that much wider is in doubt, and `unhandled`.
 // The least, over a pattern search of m's parameters from its reference ones, of the worst
 // violation of an input constraint (in tolerances): at most 60 rounds of two poses a parameter.
 double leastWorstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
@@ -682,6 +675,13 @@ double leastWorstViolation(const Problem& problem, const Registry& registry, con
   return best_v;
 }
 
+// docs/spec.md §6.4: `inconsistent` only when certain. The rules decide within the tolerance plus
+// what each derived quantity is known to, and a reading they model too narrowly can find a
+// feasible problem inconsistent by a few tolerances: two plane contacts whose planes are 1e-9 rad
+// from parallel have their distance read where the problem is centred, while the contacts lie
+// ten sizes away, where it differs by 1.6e-9 (a span angle 8e-9 rad off, 5e-9 allowed). The last
+// check lets a branch break a constraint by up to 10 tolerances (§6.5): a conflict that the same
+// rules no longer find with every tolerance that much wider is in doubt, and `unhandled`.
 void doubtNarrowConflict(const Problem& problem, const Registry& registry,
                          const SolverOptions& options, const Tolerance& decided, Workspace& ws,
                          Solution& solution) {
