@@ -565,6 +565,42 @@ bool solveOnce(const Problem& problem, const Registry& registry, const SolverOpt
 
 }  // namespace
 
+namespace {
+
+// What a pose is checked against: every input constraint's type and fixed feature in the world,
+// looked up and placed once (≤ 64 constraints).
+class ConstraintChecks {
+ public:
+  ConstraintChecks(const Problem& problem, const Registry& registry) : problem_(problem) {
+    for (const InputConstraint& c : problem.constraints)
+      checks_.push_back({registry.constraintType(c.type), c.fixed.placed(problem.fixed.pose)});
+  }
+  // The worst violation of an input constraint (in tolerances, by its type's own reading) with
+  // the mobile object at X, and which constraint (*which) breaks it most.
+  double worstAt(const Isometry3d& X, const Tolerance& tol, std::size_t* which) const {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < checks_.size(); ++i) {
+      const ConstraintType* type = checks_[i].type;
+      if (!type || !type->violation) continue;
+      const InputConstraint& c = problem_.constraints[i];
+      const double v =
+          type->violation(c, checks_[i].fixed_W, c.mobile.placed(X), tol, type->context);
+      if (!(v <= worst)) worst = v, *which = i;
+    }
+    return worst;
+  }
+
+ private:
+  struct Check {
+    const ConstraintType* type;
+    Feature fixed_W;
+  };
+  const Problem& problem_;
+  FixedVector<Check, 64> checks_;  // (slots not constructed until used)
+};
+
+}  // namespace
+
 namespace detail {
 
 // The last check before a solution leaves the solver: one pose of every branch, evaluated against
@@ -575,15 +611,7 @@ namespace detail {
 void checkBranches(const Problem& problem, const Registry& registry, const Tolerance& tol,
                    Solution& solution) {
   if (solution.status != Status::kSolved) return;
-  // What every branch is checked against, looked up and placed once (≤ 64 constraints).
-  struct Check {
-    const ConstraintType* type;
-    Feature fixed_W;
-  };
-  FixedVector<Check, 64> checks;  // (slots not constructed until used)
-  const std::size_t n = problem.constraints.size();
-  for (const InputConstraint& c : problem.constraints)
-    checks.push_back({registry.constraintType(c.type), c.fixed.placed(problem.fixed.pose)});
+  const ConstraintChecks checks(problem, registry);
   for (std::size_t b = 0; b < solution.branches.size(); ++b) {
     const Manifold& m = *solution.branches[b].manifold;
     Isometry3d X;
@@ -597,16 +625,9 @@ void checkBranches(const Problem& problem, const Registry& registry, const Toler
     }
     bool finite = X.matrix().allFinite();
     for (int i = 0; i < kMaxDof; ++i) finite = finite && !std::isnan(theta[i]);
-    double worst = finite ? 0.0 : std::numeric_limits<double>::infinity();
     std::size_t which = 0;
-    for (std::size_t i = 0; finite && i < n; ++i) {
-      const ConstraintType* type = checks[i].type;
-      if (!type || !type->violation) continue;
-      const InputConstraint& c = problem.constraints[i];
-      const double v =
-          type->violation(c, checks[i].fixed_W, c.mobile.placed(X), tol, type->context);
-      if (!(v <= worst)) worst = v, which = i;
-    }
+    const double worst =
+        finite ? checks.worstAt(X, tol, &which) : std::numeric_limits<double>::infinity();
     if (worst <= kBreakdownTolerances) continue;
     char why[200];
     if (!finite)
@@ -631,24 +652,17 @@ namespace {
 
 // The least, over a pattern search of m's parameters from its reference ones, of the worst
 // violation of an input constraint (in tolerances): at most 60 rounds of two poses a parameter.
-double leastWorstViolation(const Problem& problem, const Registry& registry, const Tolerance& tol,
-                           const Manifold& m) {
+double leastWorstViolation(const Problem& problem, const ConstraintChecks& checks,
+                           const Tolerance& tol, const Manifold& m) {
   auto worstAt = [&](const Params& t) {
-    double worst = 0.0;
     try {
       const Isometry3d X = m.pose(t);
       if (!X.matrix().allFinite()) return std::numeric_limits<double>::infinity();
-      for (const InputConstraint& c : problem.constraints) {
-        const ConstraintType* type = registry.constraintType(c.type);
-        if (!type || !type->violation) continue;
-        const double v = type->violation(c, c.fixed.placed(problem.fixed.pose), c.mobile.placed(X),
-                                         tol, type->context);
-        if (!(v <= worst)) worst = v;
-      }
+      std::size_t which;
+      return checks.worstAt(X, tol, &which);
     } catch (...) {
       return std::numeric_limits<double>::infinity();
     }
-    return worst;
   };
   Params best = referenceParams(m);
   double best_v = worstAt(best);
@@ -700,9 +714,10 @@ void doubtNarrowConflict(const Problem& problem, const Registry& registry,
   // off where a distance 20 tolerances off is read through acos). Sought along each branch from
   // its reference parameters: near-parallel lines read as parallel meet the second line only
   // where the contacts lie, far from there.
+  const ConstraintChecks checks(problem, registry);
   bool near = false;
   for (const Branch& b : widely.branches)
-    near = near || leastWorstViolation(problem, registry, decided, *b.manifold) <=
+    near = near || leastWorstViolation(problem, checks, decided, *b.manifold) <=
                        detail::kBreakdownTolerances;
   if (!near) return;
   std::string which;

@@ -182,11 +182,12 @@ bool RadialGraspManifold::nearestArc(const Isometry3d& X, int* i, double* lo, do
   if (!spin_closed_) return false;
   // The point searched at ψ is F Rz(ψ) w over the rectangle of w = (r, 0, z) + v, v the mobile
   // origin from the fingertip (placeTip): its distance to X's origin x (axis frame) falls as
-  // w_x ρx cos(ψ − ψx) rises, nondecreasing in |ψ − ψx| while w_x = r + v_x ≥ 0 over the radii
-  // (and w_y = 0), in |ψ − ψx − π| while w_x ≤ 0 over them (the origin beyond the axis).
+  // w_x ρx cos(ψ − ψx) rises, nondecreasing in |ψ − ψx| while w_x = r + v_x ≥ 0 over the radii,
+  // in |ψ − ψx − π| while w_x ≤ 0 over them (the origin beyond the axis). (w_y = v_y is the
+  // origin's offset across the approach line, which a closed-form spin bounds by rounding.)
   const Vector3d& v = origin_from_tip_;
   const bool outside = s_.r_lo + v.x() >= 0.0, beyond = s_.r_hi + v.x() <= 0.0;
-  if (!(outside || beyond) || !(std::abs(v.y()) <= kUnitRounding * (1.0 + v.norm()))) return false;
+  if (!outside && !beyond) return false;
   const Matrix3d& F = F_.linear();
   const Vector3d x = F.transpose() * (X.translation() - F_.translation());
   // The approach directions: F Rz(ψ) c for the branch, b for X (both in the axis frame below);
