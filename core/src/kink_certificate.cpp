@@ -20,16 +20,23 @@ constexpr double kUnreachable = 0.25;
 }  // namespace
 
 bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Parameter* par,
-                          Params* best, double* best_d) {
+                          Params* best, double* best_d, double* start_d) {
   const unsigned fixed = m.closedFormParams();
   int idx[kMaxDof];
   const int k = searchedParams(m, idx);
+  if (start_d) *start_d = std::numeric_limits<double>::quiet_NaN();
   if (k == 0 || k > kMaxSearched) return false;
   Linearisation l;
   double last_step = std::numeric_limits<double>::infinity();
+  // The residuals at *best, its closed-form parameters set: from the pose itself at first (the
+  // caller's distance, +inf when it has not weighed *best, taken from them), then those of the
+  // step just taken, which weighed it.
+  Params at = *best;
+  Residuals here = residualsAt(m, X, fixed, &at);
+  if (start_d) *start_d = here.d;
+  *best = at;
+  if (!(*best_d < std::numeric_limits<double>::infinity())) *best_d = here.d;
   for (int iter = 0; iter < 8; ++iter) {
-    Params at = *best;
-    const Residuals here = residualsAt(m, X, fixed, &at);
     const double angle = here.r.norm();
     // Far from a kink (or NaN): the smooth search's case, told before the differences' 2k poses.
     if (!(angle < 0.5)) return false;
@@ -41,7 +48,7 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
     if (iter > 0 && last_step <= 0.1 * kDifferenceStep) {
       l.here = here;
     } else {
-      l = linearise(m, X, par, idx, k, &at, here);
+      l = linearise(m, X, par, idx, k, best, here);
     }
     const Jacobian &Jr = l.Jr, &Jt = l.Jt;
     const bool probe_nearer = l.probe_d < here.d;
@@ -87,10 +94,11 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
       const double moved = std::abs(next[idx[a]] - (*best)[idx[a]]);
       last_step = std::max(last_step, moved / differenceUnit(par[idx[a]], (*best)[idx[a]]));
     }
-    const double d = distanceWithTail(m, X, fixed, &next);
-    if (!(d < *best_d)) return false;
+    // Weighed by its residuals, which the next round reads (not by searchDistance, then again).
+    here = residualsAt(m, X, fixed, &next);
+    if (!(here.d < *best_d)) return false;
     *best = next;
-    *best_d = d;
+    *best_d = here.d;
   }
   return false;
 }

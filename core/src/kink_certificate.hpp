@@ -20,9 +20,11 @@ constexpr double kKinkReach = 1e-4;
 // probe of the differences is checked not to be nearer as well. Where X's rotation lies a small
 // ε (≤ 1e-4) off every rotation of the branch (an initial pose written with 8 digits), the same
 // test holds at the minimum of the model ‖Δt‖ + gᵀδ + √(ε² + ‖J_r δ‖²), which the steps end on.
+// *best_d +inf: *best not weighed yet (its distance is then set from the first residuals).
+// *start_d (if given): the distance at *best as given, NaN where none was weighed.
 // False (the search goes on from *best, never farther than before) for more than three searched
 // parameters, a rotation that cannot be reached, or a point the translation pulls away from.
 bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Parameter* par,
-                          Params* best, double* best_d);
+                          Params* best, double* best_d, double* start_d = nullptr);
 
 }  // namespace relpos::detail

@@ -53,12 +53,6 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
           : kSamples;
   const double proj = (*best)[i], proj_d = *best_d;
   const double step = p.periodic ? 2 * kPi / kSamples : (p.max - p.min) / (n - 1);
-  double v[kSamples], d[kSamples];
-  for (int s = 0; s < n; ++s) {
-    // The last sample is the upper bound itself, not min + (n − 1)·step (a few ulps short of it).
-    v[s] = p.periodic ? proj + s * step : (s + 1 < n ? p.min + s * step : p.max);
-    d[s] = p.periodic && s == 0 ? proj_d : distanceAt(v[s]);
-  }
   // Brent (a kink is the caller's to settle), from the sample, over the two steps
   // around each of the two nearest samples that are nearer than their neighbours. Not only the
   // nearest: where the angle moves a point far (an ellipse 100 long), a basin 10° wide may hide
@@ -67,13 +61,15 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   // converges by golden sections, one bit a pose; the kink's own steps reach it and prove it a
   // minimum in a few. The distance of the point so proven, if it ends the nearest.
   double certified_d = std::numeric_limits<double>::quiet_NaN();
-  // The certificate from θ_i = centre (its distance centre_d): true when it settles a kink there,
-  // its angle then in *settled_at; a nearer point its steps reach is kept either way.
-  auto settleFrom = [&](double centre, double centre_d, double* settled_at) {
+  // The certificate from θ_i = centre (its distance centre_d; +inf: not weighed yet, the
+  // certificate weighs it, into *start_d if given): true when it settles a kink there, its angle
+  // then in *settled_at; a nearer point its steps reach is kept either way.
+  auto settleFrom = [&](double centre, double centre_d, double* settled_at,
+                        double* start_d = nullptr) {
     Params at = *best;
     at[i] = centre;
     double at_d = centre_d;
-    if (!settleOnRotationKink(m, X, par, &at, &at_d)) {
+    if (!settleOnRotationKink(m, X, par, &at, &at_d, start_d)) {
       if (at_d < *best_d) *best = at, *best_d = at_d;  // its steps only ever lower the distance
       return false;
     }
@@ -89,9 +85,24 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   const double kink_angle = m.nearestRotation(X, &kink);
   const bool out_of_reach = kink_angle > 2 * kKinkReach;     // (NaN, not known: false)
   double kink_v = std::numeric_limits<double>::quiet_NaN();  // the kink settled there, if one
+  // The kink's angle and distance, where the certificate starts (its own first residuals weigh
+  // it): a sample within 1e-5 of it is taken there (an arc's end, 1e-6 beyond the kink).
+  double kink_at = std::numeric_limits<double>::quiet_NaN(), kink_d = kink_at;
   if (kink_angle <= 2 * kKinkReach) {
-    const double at = clampParam(p, onTurn(kink[i])), at_d = distanceAt(at);
-    if (at_d < std::numeric_limits<double>::infinity()) settleFrom(at, at_d, &kink_v);
+    kink_at = clampParam(p, onTurn(kink[i]));
+    settleFrom(kink_at, std::numeric_limits<double>::infinity(), &kink_v, &kink_d);
+    if (std::isnan(kink_d)) kink_at = kink_d;  // not weighed there: no sample taken for it
+  }
+  double v[kSamples], d[kSamples];
+  for (int s = 0; s < n; ++s) {
+    // The last sample is the upper bound itself, not min + (n − 1)·step (a few ulps short of it).
+    v[s] = p.periodic ? proj + s * step : (s + 1 < n ? p.min + s * step : p.max);
+    if (p.periodic && s == 0)
+      d[s] = proj_d;
+    else if (std::abs(v[s] - kink_at) <= 1e-5)
+      v[s] = kink_at, d[s] = kink_d;
+    else
+      d[s] = distanceAt(v[s]);
   }
   auto refineAround = [&](double centre, double centre_d) {
     // A settled kink within the sample's two steps is this basin's minimum (NaN: none settled).
