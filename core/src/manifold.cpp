@@ -349,10 +349,14 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
                                                                       : Kink::kNone;
   };
   Kink kink = Kink::kNone;
+  // A certificate's point has its closed-form parameters set (from its residuals): the one-angle
+  // search's settled answer, or the kink's below.
+  bool tail_set = settled;
   if (!settled) {  // (the one-angle search may have settled its kink already)
     kink = kinkAt(best);
     settled =
         kink != Kink::kNone ? detail::settleOnRotationKink(m, X, par, &best, &best_d) : converged;
+    tail_set = settled && kink != Kink::kNone;
   }
   if (!settled) {
     if (kink != Kink::kNone && !one_angle) best_step = std::max(best_step, 1e-2);
@@ -365,9 +369,11 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
         kinkAt(best) == Kink::kRotation && detail::settleOnRotationKink(m, X, par, &best, &best_d);
     if (!on_kink) detail::descendOnDistanceModel(m, X, par, &best, &best_d);
   }
+  const Params settled_at = best;
   refineInNarrowBox(m, X, par, &best, &best_d);
-  // The closed-form parameters as poseWithTail sets them (searchDistance may leave a spin unset).
-  if (fixed != 0u) m.poseWithTail(X, &best);
+  // The closed-form parameters as poseWithTail sets them (searchDistance may leave a spin unset),
+  // unless a certificate's point, unmoved since, has them (the same doubles: its own pass).
+  if (fixed != 0u && !(tail_set && best == settled_at)) m.poseWithTail(X, &best);
   for (int i = 0; i < n; ++i)
     if (par[i].periodic) best[i] = std::remainder(best[i], 2 * kPi);
   return best;
