@@ -28,9 +28,9 @@ bool settleOnRotationKink(const Manifold& m, const Isometry3d& X, const Paramete
   if (k == 0 || k > kMaxSearched) return false;
   Linearisation l;
   double last_step = std::numeric_limits<double>::infinity();
-  // The residuals at *best, its closed-form parameters set: from the pose itself at first (the
-  // caller's distance, +inf when it has not weighed *best, taken from them), then those of the
-  // step just taken, which weighed it.
+  // The residuals at *best (its closed-form parameters set in it): first those of *best as given
+  // (its distance taken from them where the caller, not having weighed it, passes +inf), then
+  // those of each step taken, which weighed it.
   Params at = *best;
   Residuals here = residualsAt(m, X, fixed, &at);
   if (start_d) *start_d = here.d;

@@ -91,7 +91,8 @@ bool nearestAlongOneAngle(const Manifold& m, const Isometry3d& X, const Paramete
   if (kink_angle <= 2 * kKinkReach) {
     kink_at = clampParam(p, onTurn(kink[i]));
     settleFrom(kink_at, std::numeric_limits<double>::infinity(), &kink_v, &kink_d);
-    if (std::isnan(kink_d)) kink_at = kink_d;  // not weighed there: no sample taken for it
+    // Not weighed there (no certificate for this branch): no sample is taken for it.
+    if (std::isnan(kink_d)) kink_at = std::numeric_limits<double>::quiet_NaN();
   }
   double v[kSamples], d[kSamples];
   for (int s = 0; s < n; ++s) {
