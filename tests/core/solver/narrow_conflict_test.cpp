@@ -149,5 +149,25 @@ TEST(NarrowConflict, NearlyParallelLineCoincidencesAreNeverInconsistent) {
   EXPECT_NE(s.status, Status::kInconsistent) << s.message;
 }
 
+// A third (offset 7059, the same family): the contacts lie 1.3 along lines 1e-9 rad from
+// parallel, 70 times the problem's size (its points span 0.019), where the lines have drifted
+// 1.3e-9 apart: the span read at the centre was 7e-8 rad off, not the 6e-9 it claimed, and even
+// the 10-times-wider problem was inconsistent. pl+pl/parallel-span now reads only lines parallel
+// to rounding.
+TEST(NarrowConflict, LineCoincidencesFarAlongNearlyParallelLinesAreNeverInconsistent) {
+  const ParseResult r = parseSpec(
+      R"spec({"relpos":1,"name":"degenerate-3","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[1.064045510732138,-0.05843818449770288,-1.4680921756815073],"orientation":[0.3784142378007964,0.3853860119320051,0.7324960263437413,0.41440301377694605]},"features":{"F1":{"line":{"point":[-0.31554469365473425,3.78936139891272,-1.312666933494809],"direction":[0.3973919573540703,0.10501165877006413,0.9116206358747372]}},"F3":{"line":{"point":[-0.321280305694836,3.787845750764614,-1.3258244763122973],"direction":[-0.3973919578866039,-0.10501165955270936,-0.9116206355524415]}},"f2":{"plane":{"point":[1.9390581360177928,2.0487326320435564,1.6243654632852922],"normal":[-0.3849510930825839,-0.4299257531156351,0.8166862939602194]}}}},"mobile":{"name":"part","pose":{"position":[-0.6128202166745589,-0.8163653442120389,-1.6679749955397674],"orientation":[0.26762080414947836,-0.34205158548319853,0.5302668273090223,0.7281462146509038]},"features":{"M0":{"line":{"point":[-1.275040368940285,2.330680356098463,-0.8469613245028034],"direction":[-0.13318966243082414,0.5284892747643987,0.8384268604240701]}},"M2":{"line":{"point":[-1.277555449206006,2.3406600564829825,-0.8311289340758864],"direction":[-0.1331896627382947,0.5284892755465893,0.8384268598821847]}},"m2":{"plane":{"point":[-0.9004641562397298,-0.3602762240136146,0.5690237788285266],"normal":[-0.19780732510272808,0.32770534845477156,-0.923840606776862]}}}},"constraints":[{"type":"coincident","fixed":"F1","mobile":"M0","orientation":"aligned"},{"type":"coincident","fixed":"F3","mobile":"M2","orientation":"either"},{"type":"angle","fixed":"f2","mobile":"m2","value":2.8823401673627393,"orientation":"aligned"}]})spec",
+      builtinRegistry());
+  ASSERT_TRUE(r.problem);
+  Isometry3d known = Isometry3d::Identity();
+  known.translation() = Vector3d(1.0324730261539758, -1.6980437726397017, -0.41436710692913303);
+  known.linear() = Eigen::Quaterniond(0.64043124479094415, 0.12729443994382189, 0.64564901941152264,
+                                      0.39595617180169018)
+                       .toRotationMatrix();
+  ASSERT_LT(worstViolation(*r.problem, known), 1e-12);
+  const Solution s = solve(*r.problem, builtinRegistry());
+  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+}
+
 }  // namespace
 }  // namespace relpos::test
