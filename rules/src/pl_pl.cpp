@@ -140,13 +140,14 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
     if (tol.zeroLength(p) && tol.zeroLength(q)) {
       // Table IV rows 2 and 3: P on K, Q on L: P_aQ_a has the component d_b along u_b and the
       // rest along the lines: one or two directions v = (d_b u_b ± k d) / d_a.
-      if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       // Lines parallel only within the tolerance drift apart by sin θ along them, and nothing in
       // this pair bounds where along them the points lie: the separation read at the centre is
-      // the points' only there (seed offset 7059: contacts 70 problem sizes along lines 1e-9 rad
-      // apart made the span 7e-8 rad off a reading that claimed 6e-9, and a feasible problem
-      // inconsistent). Beyond rounding, the pair is left to the others and the matchers.
+      // the points' only there, neither a span nor a conflict (seed offset 7059: contacts 70
+      // problem sizes along lines 1e-9 rad apart made the span 7e-8 rad off a reading that
+      // claimed 6e-9, and a feasible problem inconsistent). Beyond rounding, the pair is left to
+      // the others and the matchers.
       if (sin_theta > kUnitRounding) return out.defer();
+      if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       out.fire(kParallelSpan);
       // (The lines are parallel only within the angle tolerance: directions read off K's are off
       // from L's by up to sin θ more.)
