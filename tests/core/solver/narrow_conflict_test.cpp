@@ -129,24 +129,31 @@ TEST(NarrowConflict, NearlyParallelPlaneContactsAreNeverInconsistent) {
   EXPECT_NE(s.status, Status::kInconsistent) << s.message;
 }
 
+// A spec (JSON text) whose known pose, given as position and quaternion (w, x, y, z), meets every
+// constraint by the tests' evaluator: the solver must not call it inconsistent.
+void expectNeverInconsistent(const char* spec, const Vector3d& position,
+                             const Eigen::Quaterniond& orientation) {
+  const ParseResult r = parseSpec(spec, builtinRegistry());
+  ASSERT_TRUE(r.problem);
+  Isometry3d known = Isometry3d::Identity();
+  known.translation() = position;
+  known.linear() = orientation.toRotationMatrix();
+  ASSERT_LT(worstViolation(*r.problem, known), 1e-12);  // the premise
+  const Solution s = solve(*r.problem, builtinRegistry());
+  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+}
+
 // Another (offset 5092, "two line coincidences meeting at an angle"): lines 1e-9 rad from parallel
 // read as parallel, their separation where the problem is centred. The wider problem's branch
 // breaks the second coincidence by 28 tolerances at its reference parameters, where the lines
 // are 2 apart from the contacts; along the branch, where the contacts lie, it meets it: the
 // conflict is sought along each branch, not at one pose.
 TEST(NarrowConflict, NearlyParallelLineCoincidencesAreNeverInconsistent) {
-  const ParseResult r = parseSpec(
+  expectNeverInconsistent(
       R"spec({"relpos": 1, "name": "degenerate-13", "units": {"angle": "rad"}, "fixed": {"name": "base", "pose": {"position": [-0.9561799448800243, -1.5156401315614558, 0.20808963833874605], "orientation": [-0.4245818749591102, 0.4165858692312691, 0.3325527103466732, 0.7318436580678389]}, "features": {"F1": {"line": {"point": [1.6272467001213875, -0.2820187432566747, 4.133697044792326], "direction": [-0.597662198950869, -0.7387767764119342, -0.3114623100466617]}}, "F3": {"line": {"point": [1.6544135351822886, -0.24843752058743956, 4.147854615886531], "direction": [-0.5976621984457071, -0.7387767770605967, -0.31146230947740916]}}, "f2": {"line": {"point": [0.30722618389823786, -2.258667748829062, 1.7387104034735765], "direction": [-0.3143442065133775, 0.943794025178759, -0.10217904808888623]}}}}, "mobile": {"name": "part", "pose": {"position": [1.4228090761127357, 1.8819549888360285, -1.7847718075884473], "orientation": [0.7554111798699776, 0.22846195083967588, -0.3478382624425454, 0.5061300519895344]}, "features": {"M0": {"line": {"point": [0.8853256583529054, 1.0894626984269475, -1.0126826534516775], "direction": [0.22815584884428924, 0.20108532427423984, -0.9526329833675014]}}, "M2": {"line": {"point": [0.8972240417461854, 1.0999493480218825, -1.0623626961629737], "direction": [0.2281558489843693, 0.2010853252357201, -0.9526329831309992]}}, "m2": {"line": {"point": [-0.6843855254854969, 0.5537207073980386, -0.8018114269629824], "direction": [-0.2909447759395885, 0.8032969657125276, -0.519677902388113]}}}}, "constraints": [{"type": "coincident", "fixed": "F1", "mobile": "M0", "orientation": "aligned"}, {"type": "coincident", "fixed": "F3", "mobile": "M2", "orientation": "aligned"}, {"type": "angle", "fixed": "f2", "mobile": "m2", "value": 2.795281019190247, "orientation": "aligned"}]})spec",
-      builtinRegistry());
-  ASSERT_TRUE(r.problem);
-  Isometry3d known = Isometry3d::Identity();
-  known.translation() = Vector3d(0.5469183190766085, 1.6601013017895174, -0.16272003754342057);
-  known.linear() = Eigen::Quaterniond(-0.35999658631447334, 0.6189838637568121, 0.6224883358224665,
-                                      0.3158634293735038)
-                       .toRotationMatrix();
-  ASSERT_LT(worstViolation(*r.problem, known), 1e-12);
-  const Solution s = solve(*r.problem, builtinRegistry());
-  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+      Vector3d(0.5469183190766085, 1.6601013017895174, -0.16272003754342057),
+      Eigen::Quaterniond(-0.35999658631447334, 0.6189838637568121, 0.6224883358224665,
+                         0.3158634293735038));
 }
 
 // A third (offset 7059, the same family): the contacts lie 1.3 along lines 1e-9 rad from
@@ -155,18 +162,11 @@ TEST(NarrowConflict, NearlyParallelLineCoincidencesAreNeverInconsistent) {
 // the 10-times-wider problem was inconsistent. pl+pl/parallel-span now reads only lines parallel
 // to rounding.
 TEST(NarrowConflict, LineCoincidencesFarAlongNearlyParallelLinesAreNeverInconsistent) {
-  const ParseResult r = parseSpec(
+  expectNeverInconsistent(
       R"spec({"relpos":1,"name":"degenerate-3","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[1.064045510732138,-0.05843818449770288,-1.4680921756815073],"orientation":[0.3784142378007964,0.3853860119320051,0.7324960263437413,0.41440301377694605]},"features":{"F1":{"line":{"point":[-0.31554469365473425,3.78936139891272,-1.312666933494809],"direction":[0.3973919573540703,0.10501165877006413,0.9116206358747372]}},"F3":{"line":{"point":[-0.321280305694836,3.787845750764614,-1.3258244763122973],"direction":[-0.3973919578866039,-0.10501165955270936,-0.9116206355524415]}},"f2":{"plane":{"point":[1.9390581360177928,2.0487326320435564,1.6243654632852922],"normal":[-0.3849510930825839,-0.4299257531156351,0.8166862939602194]}}}},"mobile":{"name":"part","pose":{"position":[-0.6128202166745589,-0.8163653442120389,-1.6679749955397674],"orientation":[0.26762080414947836,-0.34205158548319853,0.5302668273090223,0.7281462146509038]},"features":{"M0":{"line":{"point":[-1.275040368940285,2.330680356098463,-0.8469613245028034],"direction":[-0.13318966243082414,0.5284892747643987,0.8384268604240701]}},"M2":{"line":{"point":[-1.277555449206006,2.3406600564829825,-0.8311289340758864],"direction":[-0.1331896627382947,0.5284892755465893,0.8384268598821847]}},"m2":{"plane":{"point":[-0.9004641562397298,-0.3602762240136146,0.5690237788285266],"normal":[-0.19780732510272808,0.32770534845477156,-0.923840606776862]}}}},"constraints":[{"type":"coincident","fixed":"F1","mobile":"M0","orientation":"aligned"},{"type":"coincident","fixed":"F3","mobile":"M2","orientation":"either"},{"type":"angle","fixed":"f2","mobile":"m2","value":2.8823401673627393,"orientation":"aligned"}]})spec",
-      builtinRegistry());
-  ASSERT_TRUE(r.problem);
-  Isometry3d known = Isometry3d::Identity();
-  known.translation() = Vector3d(1.0324730261539758, -1.6980437726397017, -0.41436710692913303);
-  known.linear() = Eigen::Quaterniond(0.64043124479094415, 0.12729443994382189, 0.64564901941152264,
-                                      0.39595617180169018)
-                       .toRotationMatrix();
-  ASSERT_LT(worstViolation(*r.problem, known), 1e-12);
-  const Solution s = solve(*r.problem, builtinRegistry());
-  EXPECT_NE(s.status, Status::kInconsistent) << s.message;
+      Vector3d(1.0324730261539758, -1.6980437726397017, -0.41436710692913303),
+      Eigen::Quaterniond(0.64043124479094415, 0.12729443994382189, 0.64564901941152264,
+                         0.39595617180169018));
 }
 
 }  // namespace
