@@ -99,6 +99,16 @@ std::vector<Case> cases() {
          return TranslationPart(tr::Ellipse(a, b));
        },
        &constraintsOf<tr::Ellipse>},
+      {"EllipseNearCircle",
+       [=](Rng& r) {
+         // The axis 1e-11 rad from the plane's normal: the in-plane axes come from a cross
+         // product of that size, whose rounding must not tilt them off the plane.
+         Fundamental a = pl(r, r.uniform(0.1, 2)), b = pplane(r);
+         b.point_side = a.point_side;
+         b.d = (a.d + 1e-11 * anyPerpendicular(a.d)).normalized();
+         return TranslationPart(tr::Ellipse(a, b));
+       },
+       &constraintsOf<tr::Ellipse>},
       {"Shell", [=](Rng& r) { return TranslationPart(tr::Shell(ranged(pp(r, 0.0), 0.5, 1.5))); },
        &constraintsOf<tr::Shell>},
       {"ThickCylinder",
