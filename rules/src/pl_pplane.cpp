@@ -38,6 +38,12 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   const Vector3d k0 = projectOnLine(Vector3d::Zero(), pl.q, pl.d);
   const double h = (k0 - pp.q).dot(n);
   const double db = std::abs(h);
+  // Two points, and a line parallel to the plane only within the tolerance: the line's height
+  // over the plane drifts by |d·n| along it, and nothing in this pair bounds where along it the
+  // points lie (it even crosses the plane far away, where any span fits): the height read at the
+  // centre is the points' only there, neither a span nor a conflict (as pl+pl's parallel lines).
+  // Left to the other rules and the matchers; lines parallel to rounding are read as before.
+  if (da > tol.length && std::abs(dn) > kUnitRounding) return out.defer();
   if (db - da > p + tol.length) {
     // Apart here but not exactly parallel: the point is where they cross further away.
     if (one_point_on_both && Tolerance::beyondRounding(dn)) return pinAtCrossing();

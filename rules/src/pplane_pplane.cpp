@@ -45,6 +45,12 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }
+  // Planes parallel only within the tolerance drift apart by sin θ along them, and nothing in
+  // this pair bounds where on them the points lie (the planes even meet far away, where any span
+  // fits): the distance read at the centre is the points' only there, neither a span nor a
+  // conflict (as pl+pl's parallel lines). Left to the other rules and the matchers; planes
+  // parallel to rounding are read as before.
+  if (cross.norm() > kUnitRounding) return out.defer();
   double alpha;
   if (!acosChecked(db, da, tol.length, &alpha))  // Fig. 3a: d_a < d_b
     return out.fire(kIncompatible)

@@ -169,5 +169,35 @@ TEST(NarrowConflict, LineCoincidencesFarAlongNearlyParallelLinesAreNeverInconsis
                          0.39595617180169018));
 }
 
+// The same for planes and for a line and a plane (by construction): two points 1e-7 closer
+// together than the parallel planes (or the line and the plane) are apart where the problem is
+// centred, which are tilted 1e-9 rad: 100 away they are close enough. pplane+pplane and
+// pl+pplane read only features parallel to rounding as a span or a conflict.
+TEST(NarrowConflict, PointsOnPlanesTiltedWithinTheToleranceAreNeverInconsistent) {
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-planes", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
+          "P": {"plane": {"point": [0, 0, 1], "normal": [-1e-9, 0, 1]}}}},
+        "mobile": {"name": "part", "features": {
+          "a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.9999999]}}},
+        "constraints": [{"type": "coincident", "fixed": "S", "mobile": "a"},
+                        {"type": "coincident", "fixed": "P", "mobile": "b"}]})spec",
+      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+}
+
+TEST(NarrowConflict, PointsOnALineAndAPlaneTiltedWithinTheToleranceAreNeverInconsistent) {
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-line", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 1], "direction": [1, 0, 1e-9]}},
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}}}},
+        "mobile": {"name": "part", "features": {
+          "a": {"point": [0, 0, 0.9999999]}, "b": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "coincident", "fixed": "K", "mobile": "a"},
+                        {"type": "coincident", "fixed": "S", "mobile": "b"}]})spec",
+      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+}
+
 }  // namespace
 }  // namespace relpos::test
