@@ -17,6 +17,10 @@ void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Toleranc
   const Vector3d w = b.q - a.q;
   if (!tol.parallelUnit(a.d.cross(b.d).norm()) || (w - w.dot(a.d) * a.d).norm() > tol.length)
     return;
+  // Axes parallel only within the tolerance (beyond rounding) drift apart along their length,
+  // where distances to them differ by up to that drift: disjoint ranges here are no conflict.
+  if (disjoint({a.lo, a.hi}, {b.lo, b.hi}, tol) && a.d.cross(b.d).norm() > kUnitRounding)
+    return out.defer();
   Interval both;
   if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both)) one(out, distanceRange(a, both, tol));
 }

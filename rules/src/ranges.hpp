@@ -17,13 +17,18 @@ struct Interval {
   double lo, hi;
 };
 
+// Whether two intervals of the same quantity have nothing in common (beyond the tolerance).
+inline bool disjoint(Interval a, Interval b, const Tolerance& tol) {
+  return std::max(a.lo, b.lo) > std::min(a.hi, b.hi) + tol.length;
+}
+
 // Decides two intervals of the same quantity (the first constraint's), writing the overlap into
 // `both`. Returns false when the rule made its decision without a replacement.
 inline bool intersect(Interval a, Interval b, const Tolerance& tol, RuleOutput& out,
                       Interval* both) {
   both->lo = std::max(a.lo, b.lo);
   both->hi = std::min(a.hi, b.hi);
-  if (both->lo > both->hi + tol.length) {
+  if (disjoint(a, b, tol)) {
     out.fire(kDisjoint).incompatible(
         "two ranges on the same distance that do not overlap (Somani 004 Table VII)");
     return false;

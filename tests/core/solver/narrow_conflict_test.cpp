@@ -199,5 +199,41 @@ TEST(NarrowConflict, PointsOnALineAndAPlaneTiltedWithinTheToleranceAreNeverIncon
       Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
 }
 
+// And for Somani's ranges on one point (by construction): two slabs, a thick cylinder and a
+// plane, two thick cylinders, each pair parallel within 1e-9 rad and 1e-7 apart where the
+// problem is centred, overlap 200 away.
+TEST(NarrowConflict, RangesOnFeaturesTiltedWithinTheToleranceAreNeverInconsistent) {
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-slabs", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
+          "P": {"plane": {"point": [0, 0, 0], "normal": [-1e-9, 0, 1]}}}},
+        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "distance", "fixed": "S", "mobile": "a", "min": 0.5, "max": 1},
+                        {"type": "distance", "fixed": "P", "mobile": "a", "min": 1.0000001,
+                         "max": 2}]})spec",
+      Vector3d(-200, 0, 1), Eigen::Quaterniond::Identity());
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-thick-cylinder", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}},
+          "S": {"plane": {"point": [0, 0, 2], "normal": [0, 0, 1]}}}},
+        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5,
+                         "max": 1.9999999},
+                        {"type": "coincident", "fixed": "S", "mobile": "a"}]})spec",
+      Vector3d(200, 0, 2), Eigen::Quaterniond::Identity());
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-coaxial", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
+        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5, "max": 1},
+                        {"type": "distance", "fixed": "L", "mobile": "a", "min": 1.0000001,
+                         "max": 2}]})spec",
+      Vector3d(-200, 0, 1), Eigen::Quaterniond::Identity());
+}
+
 }  // namespace
 }  // namespace relpos::test
