@@ -45,8 +45,10 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   // Left to the other rules and the matchers; lines parallel to rounding are read as before.
   if (da > tol.length && std::abs(dn) > kUnitRounding) return out.defer();
   if (db - da > p + tol.length) {
-    // Apart here but not exactly parallel: the point is where they cross further away.
+    // Apart here but not exactly parallel: the point is where they cross further away, or (a
+    // distance from the line) on the long ellipse the cylinder cuts from the plane there.
     if (one_point_on_both && Tolerance::beyondRounding(dn)) return pinAtCrossing();
+    if (Tolerance::beyondRounding(dn)) return out.defer();
     return out.fire(kIncompatible)
         .incompatible(
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "

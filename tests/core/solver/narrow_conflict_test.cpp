@@ -197,6 +197,17 @@ TEST(NarrowConflict, PointsOnALineAndAPlaneTiltedWithinTheToleranceAreNeverIncon
         "constraints": [{"type": "coincident", "fixed": "K", "mobile": "a"},
                         {"type": "coincident", "fixed": "S", "mobile": "b"}]})spec",
       Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+  // One point a distance from the line and on the plane: on the long ellipse they meet in 100
+  // away.
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-line-one-point", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 1], "direction": [1, 0, 1e-9]}},
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}}}},
+        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "value": 0.9999999},
+                        {"type": "coincident", "fixed": "S", "mobile": "a"}]})spec",
+      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
 }
 
 // And for Somani's ranges on one point (by construction): two slabs, a thick cylinder and a
