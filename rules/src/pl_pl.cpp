@@ -66,9 +66,23 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     const Vector3d w = b.q - x0;
     const Vector3d w_perp = w - w.dot(a.d) * a.d;
     const double db = w_perp.norm();
+    // Lines parallel only within the tolerance (beyond rounding) drift apart along their length:
+    // their separation here is no bound on it elsewhere, and only their least distance (the
+    // common perpendicular's) can rule a point out; every other conflict read here is left to
+    // the other rules and the matchers (one point 1 from a line and 1 + 1e-7 from one 1e-9 rad
+    // off it, through the same point: 100 away).
+    const bool drifting = sin_theta > kUnitRounding;
+    auto conflict = [&](const char* why) {
+      if (!drifting) return out.fire(kIncompatible).incompatible(why);
+      Vector3d f1, f2;
+      closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
+      if ((f2 - f1).norm() > p + q + tol.length)
+        return out.fire(kIncompatible).incompatible(kNoPose);
+      out.defer();
+    };
     if (db <= tol.length) {
       if (tol.equalLength(p, q)) return out.fire(kSameLine).redundantSecond();
-      return out.fire(kIncompatible).incompatible("one point at two distances from one line");
+      return conflict("one point at two distances from one line");
     }
     if (tol.zeroLength(p) && tol.zeroLength(q) && sin_theta > 0.0) {
       // Apart here, they may still cross further away: then the point is there.
@@ -76,8 +90,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
       closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
       if ((f2 - f1).norm() <= tol.length) return pinWhereLinesMeet(a, f1, f2, sin_theta, tol, out);
     }
-    if (db > p + q + tol.length || db < std::abs(p - q) - tol.length)
-      return out.fire(kIncompatible).incompatible(kNoPose);
+    if (db > p + q + tol.length || db < std::abs(p - q) - tol.length) return conflict(kNoPose);
     // Where the cylinders meet is read off (p² − q²) / 2 db: nearly coaxial ones magnify the
     // radii's rounding by p / db (axes 1e-8 apart: lines 1e-8 off for radii of 1).
     if (tol.tooIllConditioned(std::max(p, q) / db)) return out.defer();
@@ -132,6 +145,14 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
   const Side side = a.point_side;
   const double sin_theta = accurateCross(a.d, b.d).norm();
   if (tol.parallelUnit(sin_theta)) {
+    // Lines parallel only within the tolerance drift apart by sin θ along them, and nothing in
+    // this pair bounds where along them the points lie: the separation read at the centre is the
+    // points' only there, neither a span nor a conflict (seed offset 7059: contacts 70 problem
+    // sizes along lines 1e-9 rad apart made the span 7e-8 rad off a reading that claimed 6e-9,
+    // and a feasible problem inconsistent; a point on one of two nearly coaxial lines and
+    // another beyond the span from the second meet 100 away). Beyond rounding, the pair is left
+    // to the others and the matchers.
+    if (sin_theta > kUnitRounding) return out.defer();
     // (The separation read at the problem's centre, as in samePoint.)
     const Vector3d w = b.q - projectOnLine(Vector3d::Zero(), a.q, a.d);
     const Vector3d w_perp = w - w.dot(a.d) * a.d;  // from K_b to L_b, ⊥ both
@@ -140,13 +161,6 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
     if (tol.zeroLength(p) && tol.zeroLength(q)) {
       // Table IV rows 2 and 3: P on K, Q on L: P_aQ_a has the component d_b along u_b and the
       // rest along the lines: one or two directions v = (d_b u_b ± k d) / d_a.
-      // Lines parallel only within the tolerance drift apart by sin θ along them, and nothing in
-      // this pair bounds where along them the points lie: the separation read at the centre is
-      // the points' only there, neither a span nor a conflict (seed offset 7059: contacts 70
-      // problem sizes along lines 1e-9 rad apart made the span 7e-8 rad off a reading that
-      // claimed 6e-9, and a feasible problem inconsistent). Beyond rounding, the pair is left to
-      // the others and the matchers.
-      if (sin_theta > kUnitRounding) return out.defer();
       if (da < db - tol.length) return out.fire(kIncompatible).incompatible(kNoPose);
       out.fire(kParallelSpan);
       // (The lines are parallel only within the angle tolerance: directions read off K's are off

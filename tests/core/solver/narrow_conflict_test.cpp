@@ -246,5 +246,31 @@ TEST(NarrowConflict, RangesOnFeaturesTiltedWithinTheToleranceAreNeverInconsisten
       Vector3d(-200, 0, 1), Eigen::Quaterniond::Identity());
 }
 
+// Two nearly coaxial lines (1e-9 rad, through one point): one point 1 from the first and
+// 1 + 1e-7 from the second, and two points 0.5 apart, one on the first and the other 0.5 + 1e-7
+// from the second, fit 100 away. pl+pl calls a conflict of lines parallel only within the
+// tolerance only from their least distance.
+TEST(NarrowConflict, DistancesFromNearlyCoaxialLinesAreNeverInconsistent) {
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-axes-one-point", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
+        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
+        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "value": 1},
+                        {"type": "distance", "fixed": "L", "mobile": "a", "value": 1.0000001}]})spec",
+      Vector3d(-100, 0, 1), Eigen::Quaterniond::Identity());
+  expectNeverInconsistent(
+      R"spec({"relpos": 1, "name": "tilted-axes-two-points", "units": {"angle": "rad"},
+        "fixed": {"name": "base", "features": {
+          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
+        "mobile": {"name": "part", "features": {
+          "a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.5]}}},
+        "constraints": [{"type": "coincident", "fixed": "K", "mobile": "a"},
+                        {"type": "distance", "fixed": "L", "mobile": "b", "value": 0.5000001}]})spec",
+      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+}
+
 }  // namespace
 }  // namespace relpos::test
