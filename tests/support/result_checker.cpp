@@ -117,17 +117,22 @@ double problemSize(const Problem& p) {
 double problemExtent(const Problem& p) {
   // Every feature point where the spec places it: fixed ones by the fixed pose, mobile ones by
   // the initial pose.
+  // (magnitude: the largest coordinates placing them involves, whose rounding they carry.)
   std::vector<Vector3d> points;
-  for (const NamedFeature& f : p.fixed.features) points.push_back(p.fixed.pose * f.feature.point);
-  for (const NamedFeature& f : p.mobile.features) points.push_back(p.mobile.pose * f.feature.point);
+  double magnitude = 0.0;
+  for (const ObjectSpec* o : {&p.fixed, &p.mobile})
+    for (const NamedFeature& f : o->features) {
+      points.push_back(o->pose * f.feature.point);
+      magnitude = std::max(magnitude, o->pose.translation().norm() + f.feature.point.norm());
+    }
   Vector3d c = Vector3d::Zero();
   for (const Vector3d& q : points) c += q;
   if (!points.empty()) c /= static_cast<double>(points.size());
-  double s = 0.0, magnitude = 0.0;
+  double s = 0.0;
   for (const Vector3d& q : points) s = std::max(s, (q - c).norm());
-  for (const Vector3d& q : points) magnitude = std::max(magnitude, q.norm());
   // Points that coincide but for the rounding of placing them have no extent (a spread of 1e-16
-  // would make every comparison relative to it).
+  // would make every comparison relative to it; seed offset 7394: a point placed at the origin
+  // from coordinates of 1e6 carried 3e-16 of it).
   if (s <= 1e3 * std::numeric_limits<double>::epsilon() * magnitude) s = 0.0;
   for (const InputConstraint& cn : p.constraints) {
     s = std::max({s, cn.fixed.radius, cn.mobile.radius});
