@@ -47,8 +47,9 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   if (db - da > p + tol.length) {
     // Apart here but not exactly parallel: the point is where they cross further away, or (a
     // distance from the line) on the long ellipse the cylinder cuts from the plane there.
-    if (one_point_on_both && Tolerance::beyondRounding(dn)) return pinAtCrossing();
-    if (Tolerance::beyondRounding(dn)) return out.defer();
+    // (Parallel to rounding, 1e-12, as in pplane+pplane: parallel.)
+    if (one_point_on_both && std::abs(dn) > kUnitRounding) return pinAtCrossing();
+    if (std::abs(dn) > kUnitRounding) return out.defer();
     return out.fire(kIncompatible)
         .incompatible(
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "

@@ -39,9 +39,10 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   const double db = (b0 - a.q).dot(n);
   if (da <= tol.length) {
     if (std::abs(db) <= tol.length) return out.fire(kSamePlane).redundantSecond();  // Fig. 3b
-    // Apart here but not exactly parallel: they meet further away (unless only by rounding).
-    if (Tolerance::beyondRounding(cross.norm()))
-      return onLineWherePlanesMeet(a, b, cross, tol, out);
+    // Apart here but not exactly parallel: they meet further away — unless parallel to rounding
+    // (1e-12, as in pl+pl): then they are parallel, and where they would meet is rounding over
+    // rounding.
+    if (cross.norm() > kUnitRounding) return onLineWherePlanesMeet(a, b, cross, tol, out);
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }

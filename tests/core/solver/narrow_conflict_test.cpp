@@ -346,5 +346,25 @@ TEST(NarrowConflict, RandomContactsFarAlongNearlyParallelFeaturesAreNeverInconsi
   RecordProperty("solved", solved);
 }
 
+// Seed offset 7449 ("coincident line(f)-plane(m) + skew distance line-line + coincident
+// line-line either", world moved 1e6 and rotated): one alternative puts a point on two lines, a
+// given one and one derived from the plane, parallel and apart. Unmoved they are exactly
+// parallel and conflict; moved, the derived one is 9e-17 rad off, and pl+pl looked for where
+// they cross (1e8 away, "within the tolerance"), found it too ill-conditioned and deferred: the
+// problem was `unhandled`. Lines parallel to rounding now conflict as parallel lines do.
+TEST(NarrowConflict, LinesParallelToRoundingConflictAsParallelLines) {
+  const char* const specs[] = {
+      R"spec({"relpos":1,"name":"generated-3-207","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[0.0,2.0,2.0],"orientation":[1.0,0.0,0.0,-0.0]},"features":{"f0":{"line":{"point":[-3.1822249708488557,-1.7900131356054567,1.0],"direction":[0.7175197947620766,0.696538113906617,0.0]}},"f1":{"line":{"point":[-5.0,0.22438295275328923,0.9949309555257955],"direction":[0.0,0.0,1.0]}},"f2":{"line":{"point":[-3.0,0.9336943259644777,0.0],"direction":[0.0,1.0,0.0]}}}},"mobile":{"name":"part","pose":{"position":[-1.0,2.0,-2.0],"orientation":[0.0,0.0,1.0,0.0]},"features":{"m0":{"plane":{"point":[-2.0,-2.0,0.0],"normal":[0.0,0.0,-1.0]}},"m1":{"line":{"point":[-1.0,0.0,-1.0],"direction":[0.0,-1.0,0.0]}}}},"constraints":[{"type":"coincident","fixed":"f0","mobile":"m0","orientation":"aligned"},{"type":"distance","fixed":"f1","mobile":"m1","value":2.0,"orientation":"aligned","parallel":false},{"type":"coincident","fixed":"f2","mobile":"m1","orientation":"either"}]})spec", R"spec({"relpos":1,"name":"generated-3-207","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[285716.57064106973,-428573.02239661344,857143.3458461127],"orientation":[-0.5403023058681397,0.7479742087181303,0.373987104359065,0.09349677608976624]},"features":{"f0":{"line":{"point":[-3.1822249708488557,-1.7900131356054567,1.0],"direction":[0.7175197947620766,0.6965381139066171,0.0]}},"f1":{"line":{"point":[-5.0,0.22438295275328923,0.9949309555257955],"direction":[0.0,0.0,1.0]}},"f2":{"line":{"point":[-3.0,0.9336943259644777,0.0],"direction":[0.0,1.0,0.0]}}}},"mobile":{"name":"part","pose":{"position":[285715.91224127007,-428569.6420715538,857141.0787086675],"orientation":[0.373987104359065,-0.09349677608976624,0.5403023058681397,0.7479742087181303]},"features":{"m0":{"plane":{"point":[-2.0,-2.0,0.0],"normal":[0.0,0.0,-1.0]}},"m1":{"line":{"point":[-1.0,0.0,-1.0],"direction":[0.0,-1.0,0.0]}}}},"constraints":[{"type":"coincident","fixed":"f0","mobile":"m0","orientation":"aligned"},{"type":"distance","fixed":"f1","mobile":"m1","value":2.0,"orientation":"aligned","parallel":false},{"type":"coincident","fixed":"f2","mobile":"m1","orientation":"either"}]})spec"};
+  for (const char* spec : specs) {
+    const ParseResult r = parseSpec(spec, builtinRegistry());
+    ASSERT_TRUE(r.problem);
+    const Solution s = solve(*r.problem, builtinRegistry());
+    ASSERT_EQ(s.status, Status::kSolved) << s.message;
+    EXPECT_EQ(s.branches.size(), 2u);
+    const CheckReport rep = checkSolution(*r.problem, s, CheckOptions{});
+    EXPECT_TRUE(rep.violating.empty() && rep.non_finite.empty()) << rep.summary();
+  }
+}
+
 }  // namespace
 }  // namespace relpos::test
