@@ -71,7 +71,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     // common perpendicular's) can rule a point out; every other conflict read here is left to
     // the other rules and the matchers (one point 1 from a line and 1 + 1e-7 from one 1e-9 rad
     // off it, through the same point: 100 away).
-    const bool drifting = sin_theta > kUnitRounding;
+    const bool drifting = Tolerance::tiltedBeyondRounding(sin_theta);
     auto conflict = [&](const char* why) {
       if (!drifting) return out.fire(kIncompatible).incompatible(why);
       Vector3d f1, f2;
@@ -155,7 +155,7 @@ void differentPoints(const Fundamental& a, const Fundamental& b, double da, cons
     // and a feasible problem inconsistent; a point on one of two nearly coaxial lines and
     // another beyond the span from the second meet 100 away). Beyond rounding, the pair is left
     // to the others and the matchers.
-    if (sin_theta > kUnitRounding) return out.defer();
+    if (Tolerance::tiltedBeyondRounding(sin_theta)) return out.defer();
     // (The separation read at the problem's centre, as in samePoint.)
     const Vector3d w = b.q - projectOnLine(Vector3d::Zero(), a.q, a.d);
     const Vector3d w_perp = w - w.dot(a.d) * a.d;  // from K_b to L_b, ⊥ both

@@ -43,13 +43,12 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   // points lie (it even crosses the plane far away, where any span fits): the height read at the
   // centre is the points' only there, neither a span nor a conflict (as pl+pl's parallel lines).
   // Left to the other rules and the matchers; lines parallel to rounding are read as before.
-  if (da > tol.length && std::abs(dn) > kUnitRounding) return out.defer();
+  const bool tilted = Tolerance::tiltedBeyondRounding(dn);
+  if (da > tol.length && tilted) return out.defer();
   if (db - da > p + tol.length) {
-    // Apart here but not exactly parallel: the point is where they cross further away, or (a
-    // distance from the line) on the long ellipse the cylinder cuts from the plane there.
-    // (Parallel to rounding, 1e-12, as in pplane+pplane: parallel.)
-    if (one_point_on_both && std::abs(dn) > kUnitRounding) return pinAtCrossing();
-    if (std::abs(dn) > kUnitRounding) return out.defer();
+    // Apart here but tilted: one point is where they cross further away, or (a distance from the
+    // line) on the long ellipse the cylinder cuts from the plane there.
+    if (tilted) return one_point_on_both ? pinAtCrossing() : out.defer();
     return out.fire(kIncompatible)
         .incompatible(
             "a point-line distance and a point-plane coincidence that no pose satisfies (PMF App. "

@@ -42,7 +42,8 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
     // Apart here but not exactly parallel: they meet further away — unless parallel to rounding
     // (1e-12, as in pl+pl): then they are parallel, and where they would meet is rounding over
     // rounding.
-    if (cross.norm() > kUnitRounding) return onLineWherePlanesMeet(a, b, cross, tol, out);
+    if (Tolerance::tiltedBeyondRounding(cross.norm()))
+      return onLineWherePlanesMeet(a, b, cross, tol, out);
     return out.fire(kIncompatible)
         .incompatible("one point on two distinct parallel planes (PMF App. IV Table VII)");
   }
@@ -51,7 +52,7 @@ void twoPointPlane(const Fundamental& a, const Fundamental& b, const Tolerance& 
   // fits): the distance read at the centre is the points' only there, neither a span nor a
   // conflict (as pl+pl's parallel lines). Left to the other rules and the matchers; planes
   // parallel to rounding are read as before.
-  if (cross.norm() > kUnitRounding) return out.defer();
+  if (Tolerance::tiltedBeyondRounding(cross.norm())) return out.defer();
   double alpha;
   if (!acosChecked(db, da, tol.length, &alpha))  // Fig. 3a: d_a < d_b
     return out.fire(kIncompatible)

@@ -19,7 +19,8 @@ void coaxialCylinders(const Fundamental& a, const Fundamental& b, const Toleranc
     return;
   // Axes parallel only within the tolerance (beyond rounding) drift apart along their length,
   // where distances to them differ by up to that drift: disjoint ranges here are no conflict.
-  if (disjoint({a.lo, a.hi}, {b.lo, b.hi}, tol) && a.d.cross(b.d).norm() > kUnitRounding)
+  if (disjoint({a.lo, a.hi}, {b.lo, b.hi}, tol) &&
+      Tolerance::tiltedBeyondRounding(a.d.cross(b.d).norm()))
     return out.defer();
   Interval both;
   if (intersect({a.lo, a.hi}, {b.lo, b.hi}, tol, out, &both)) one(out, distanceRange(a, both, tol));

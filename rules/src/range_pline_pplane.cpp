@@ -39,7 +39,7 @@ void cylinderCutByParallelPlane(const Fundamental& a, const Fundamental& b, cons
   if (h > a.hi + tol.length) {
     // A plane parallel to the axis only within the tolerance (beyond rounding) crosses it far
     // away, where it cuts the thick cylinder: beyond the range here is no conflict.
-    if (std::abs(a.d.dot(b.d)) > kUnitRounding) return out.defer();
+    if (Tolerance::tiltedBeyondRounding(a.d.dot(b.d))) return out.defer();
     out.fire(kDisjoint).incompatible(
         "a plane parallel to a distance range's axis lies beyond the range (Somani 004 Table VII)");
     return;

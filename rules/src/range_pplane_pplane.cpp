@@ -32,7 +32,8 @@ void parallelSlabs(const Fundamental& a, const Fundamental& b, const Tolerance& 
   if (ib.lo > ib.hi) std::swap(ib.lo, ib.hi);
   // Slabs parallel only within the tolerance (beyond rounding) meet far away whatever their
   // offsets here: disjoint where the problem is centred is no conflict (as pplane+pplane).
-  if (disjoint({a.lo, a.hi}, ib, tol) && a.d.cross(b.d).norm() > kUnitRounding) return out.defer();
+  if (disjoint({a.lo, a.hi}, ib, tol) && Tolerance::tiltedBeyondRounding(a.d.cross(b.d).norm()))
+    return out.defer();
   Interval both;
   if (intersect({a.lo, a.hi}, ib, tol, out, &both)) one(out, planeRange(a, both, tol));
 }

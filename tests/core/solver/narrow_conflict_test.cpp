@@ -174,81 +174,76 @@ TEST(NarrowConflict, LineCoincidencesFarAlongNearlyParallelLinesAreNeverInconsis
                          0.39595617180169018));
 }
 
+// A constructed case: fixed features and mobile points (each object's "features" members, JSON)
+// under `constraints` (a JSON array's members), both frames at the world's origin, which the
+// known pose — translated by `position`, not turned — meets: never `inconsistent`.
+void expectTranslatedPoseFeasible(const std::string& fixed, const std::string& mobile,
+                                  const std::string& constraints, const Vector3d& position) {
+  const std::string spec = R"({"relpos": 1, "name": "constructed", "units": {"angle": "rad"},
+      "fixed": {"name": "base", "features": {)" +
+                           fixed + R"(}}, "mobile": {"name": "part", "features": {)" + mobile +
+                           R"(}}, "constraints": [)" + constraints + "]}";
+  expectNeverInconsistent(spec.c_str(), position, Eigen::Quaterniond::Identity());
+}
+
 // The same for planes and for a line and a plane (by construction): two points 1e-7 closer
 // together than the parallel planes (or the line and the plane) are apart where the problem is
 // centred, which are tilted 1e-9 rad: 100 away they are close enough. pplane+pplane and
 // pl+pplane read only features parallel to rounding as a span or a conflict.
 TEST(NarrowConflict, PointsOnPlanesTiltedWithinTheToleranceAreNeverInconsistent) {
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-planes", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
-          "P": {"plane": {"point": [0, 0, 1], "normal": [-1e-9, 0, 1]}}}},
-        "mobile": {"name": "part", "features": {
-          "a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.9999999]}}},
-        "constraints": [{"type": "coincident", "fixed": "S", "mobile": "a"},
-                        {"type": "coincident", "fixed": "P", "mobile": "b"}]})spec",
-      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+  expectTranslatedPoseFeasible(
+      R"("S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
+         "P": {"plane": {"point": [0, 0, 1], "normal": [-1e-9, 0, 1]}})",
+      R"("a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.9999999]})",
+      R"({"type": "coincident", "fixed": "S", "mobile": "a"},
+         {"type": "coincident", "fixed": "P", "mobile": "b"})",
+      Vector3d(-100, 0, 0));
 }
 
 TEST(NarrowConflict, PointsOnALineAndAPlaneTiltedWithinTheToleranceAreNeverInconsistent) {
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-line", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 1], "direction": [1, 0, 1e-9]}},
-          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}}}},
-        "mobile": {"name": "part", "features": {
-          "a": {"point": [0, 0, 0.9999999]}, "b": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "coincident", "fixed": "K", "mobile": "a"},
-                        {"type": "coincident", "fixed": "S", "mobile": "b"}]})spec",
-      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+  const char* const line_and_plane =
+      R"("K": {"line": {"point": [0, 0, 1], "direction": [1, 0, 1e-9]}},
+         "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}})";
+  expectTranslatedPoseFeasible(line_and_plane,
+                               R"("a": {"point": [0, 0, 0.9999999]}, "b": {"point": [0, 0, 0]})",
+                               R"({"type": "coincident", "fixed": "K", "mobile": "a"},
+         {"type": "coincident", "fixed": "S", "mobile": "b"})",
+                               Vector3d(-100, 0, 0));
   // One point a distance from the line and on the plane: on the long ellipse they meet in 100
   // away.
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-line-one-point", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 1], "direction": [1, 0, 1e-9]}},
-          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}}}},
-        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "value": 0.9999999},
-                        {"type": "coincident", "fixed": "S", "mobile": "a"}]})spec",
-      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+  expectTranslatedPoseFeasible(
+      line_and_plane, R"("a": {"point": [0, 0, 0]})",
+      R"({"type": "distance", "fixed": "K", "mobile": "a", "value": 0.9999999},
+         {"type": "coincident", "fixed": "S", "mobile": "a"})",
+      Vector3d(-100, 0, 0));
 }
 
 // And for Somani's ranges on one point (by construction): two slabs, a thick cylinder and a
 // plane, two thick cylinders, each pair parallel within 1e-9 rad and 1e-7 apart where the
 // problem is centred, overlap 200 away.
 TEST(NarrowConflict, RangesOnFeaturesTiltedWithinTheToleranceAreNeverInconsistent) {
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-slabs", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
-          "P": {"plane": {"point": [0, 0, 0], "normal": [-1e-9, 0, 1]}}}},
-        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "distance", "fixed": "S", "mobile": "a", "min": 0.5, "max": 1},
-                        {"type": "distance", "fixed": "P", "mobile": "a", "min": 1.0000001,
-                         "max": 2}]})spec",
-      Vector3d(-200, 0, 1), Eigen::Quaterniond::Identity());
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-thick-cylinder", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}},
-          "S": {"plane": {"point": [0, 0, 2], "normal": [0, 0, 1]}}}},
-        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5,
-                         "max": 1.9999999},
-                        {"type": "coincident", "fixed": "S", "mobile": "a"}]})spec",
-      Vector3d(200, 0, 2), Eigen::Quaterniond::Identity());
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-coaxial", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
-          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
-        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5, "max": 1},
-                        {"type": "distance", "fixed": "L", "mobile": "a", "min": 1.0000001,
-                         "max": 2}]})spec",
-      Vector3d(-200, 0, 1), Eigen::Quaterniond::Identity());
+  const char* const point = R"("a": {"point": [0, 0, 0]})";
+  expectTranslatedPoseFeasible(
+      R"("S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}},
+         "P": {"plane": {"point": [0, 0, 0], "normal": [-1e-9, 0, 1]}})",
+      point,
+      R"({"type": "distance", "fixed": "S", "mobile": "a", "min": 0.5, "max": 1},
+         {"type": "distance", "fixed": "P", "mobile": "a", "min": 1.0000001, "max": 2})",
+      Vector3d(-200, 0, 1));
+  expectTranslatedPoseFeasible(
+      R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}},
+         "S": {"plane": {"point": [0, 0, 2], "normal": [0, 0, 1]}})",
+      point,
+      R"({"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5, "max": 1.9999999},
+         {"type": "coincident", "fixed": "S", "mobile": "a"})",
+      Vector3d(200, 0, 2));
+  expectTranslatedPoseFeasible(
+      R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+         "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}})",
+      point,
+      R"({"type": "distance", "fixed": "K", "mobile": "a", "min": 0.5, "max": 1},
+         {"type": "distance", "fixed": "L", "mobile": "a", "min": 1.0000001, "max": 2})",
+      Vector3d(-200, 0, 1));
 }
 
 // Two nearly coaxial lines (1e-9 rad, through one point): one point 1 from the first and
@@ -256,25 +251,18 @@ TEST(NarrowConflict, RangesOnFeaturesTiltedWithinTheToleranceAreNeverInconsisten
 // from the second, fit 100 away. pl+pl calls a conflict of lines parallel only within the
 // tolerance only from their least distance.
 TEST(NarrowConflict, DistancesFromNearlyCoaxialLinesAreNeverInconsistent) {
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-axes-one-point", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
-          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
-        "mobile": {"name": "part", "features": {"a": {"point": [0, 0, 0]}}},
-        "constraints": [{"type": "distance", "fixed": "K", "mobile": "a", "value": 1},
-                        {"type": "distance", "fixed": "L", "mobile": "a", "value": 1.0000001}]})spec",
-      Vector3d(-100, 0, 1), Eigen::Quaterniond::Identity());
-  expectNeverInconsistent(
-      R"spec({"relpos": 1, "name": "tilted-axes-two-points", "units": {"angle": "rad"},
-        "fixed": {"name": "base", "features": {
-          "K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
-          "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}}}},
-        "mobile": {"name": "part", "features": {
-          "a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.5]}}},
-        "constraints": [{"type": "coincident", "fixed": "K", "mobile": "a"},
-                        {"type": "distance", "fixed": "L", "mobile": "b", "value": 0.5000001}]})spec",
-      Vector3d(-100, 0, 0), Eigen::Quaterniond::Identity());
+  const char* const nearly_coaxial =
+      R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+         "L": {"line": {"point": [0, 0, 0], "direction": [1, 0, 1e-9]}})";
+  expectTranslatedPoseFeasible(nearly_coaxial, R"("a": {"point": [0, 0, 0]})",
+                               R"({"type": "distance", "fixed": "K", "mobile": "a", "value": 1},
+         {"type": "distance", "fixed": "L", "mobile": "a", "value": 1.0000001})",
+                               Vector3d(-100, 0, 1));
+  expectTranslatedPoseFeasible(nearly_coaxial,
+                               R"("a": {"point": [0, 0, 0]}, "b": {"point": [0, 0, 0.5]})",
+                               R"({"type": "coincident", "fixed": "K", "mobile": "a"},
+         {"type": "distance", "fixed": "L", "mobile": "b", "value": 0.5000001})",
+                               Vector3d(-100, 0, 0));
 }
 
 // The same, random (seeded): two fixed features (planes or lines) 1e-10 to 1e-9 rad from
@@ -355,15 +343,17 @@ TEST(NarrowConflict, RandomContactsFarAlongNearlyParallelFeaturesAreNeverInconsi
 TEST(NarrowConflict, LinesParallelToRoundingConflictAsParallelLines) {
   const char* const specs[] = {
       R"spec({"relpos":1,"name":"generated-3-207","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[0.0,2.0,2.0],"orientation":[1.0,0.0,0.0,-0.0]},"features":{"f0":{"line":{"point":[-3.1822249708488557,-1.7900131356054567,1.0],"direction":[0.7175197947620766,0.696538113906617,0.0]}},"f1":{"line":{"point":[-5.0,0.22438295275328923,0.9949309555257955],"direction":[0.0,0.0,1.0]}},"f2":{"line":{"point":[-3.0,0.9336943259644777,0.0],"direction":[0.0,1.0,0.0]}}}},"mobile":{"name":"part","pose":{"position":[-1.0,2.0,-2.0],"orientation":[0.0,0.0,1.0,0.0]},"features":{"m0":{"plane":{"point":[-2.0,-2.0,0.0],"normal":[0.0,0.0,-1.0]}},"m1":{"line":{"point":[-1.0,0.0,-1.0],"direction":[0.0,-1.0,0.0]}}}},"constraints":[{"type":"coincident","fixed":"f0","mobile":"m0","orientation":"aligned"},{"type":"distance","fixed":"f1","mobile":"m1","value":2.0,"orientation":"aligned","parallel":false},{"type":"coincident","fixed":"f2","mobile":"m1","orientation":"either"}]})spec", R"spec({"relpos":1,"name":"generated-3-207","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[285716.57064106973,-428573.02239661344,857143.3458461127],"orientation":[-0.5403023058681397,0.7479742087181303,0.373987104359065,0.09349677608976624]},"features":{"f0":{"line":{"point":[-3.1822249708488557,-1.7900131356054567,1.0],"direction":[0.7175197947620766,0.6965381139066171,0.0]}},"f1":{"line":{"point":[-5.0,0.22438295275328923,0.9949309555257955],"direction":[0.0,0.0,1.0]}},"f2":{"line":{"point":[-3.0,0.9336943259644777,0.0],"direction":[0.0,1.0,0.0]}}}},"mobile":{"name":"part","pose":{"position":[285715.91224127007,-428569.6420715538,857141.0787086675],"orientation":[0.373987104359065,-0.09349677608976624,0.5403023058681397,0.7479742087181303]},"features":{"m0":{"plane":{"point":[-2.0,-2.0,0.0],"normal":[0.0,0.0,-1.0]}},"m1":{"line":{"point":[-1.0,0.0,-1.0],"direction":[0.0,-1.0,0.0]}}}},"constraints":[{"type":"coincident","fixed":"f0","mobile":"m0","orientation":"aligned"},{"type":"distance","fixed":"f1","mobile":"m1","value":2.0,"orientation":"aligned","parallel":false},{"type":"coincident","fixed":"f2","mobile":"m1","orientation":"either"}]})spec"};
-  for (const char* spec : specs) {
-    const ParseResult r = parseSpec(spec, builtinRegistry());
+  std::size_t branches[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const ParseResult r = parseSpec(specs[k], builtinRegistry());
     ASSERT_TRUE(r.problem);
     const Solution s = solve(*r.problem, builtinRegistry());
     ASSERT_EQ(s.status, Status::kSolved) << s.message;
-    EXPECT_EQ(s.branches.size(), 2u);
+    branches[k] = s.branches.size();
     const CheckReport rep = checkSolution(*r.problem, s, CheckOptions{});
     EXPECT_TRUE(rep.violating.empty() && rep.non_finite.empty()) << rep.summary();
   }
+  EXPECT_EQ(branches[1], branches[0]);  // the same problem, moved
 }
 
 }  // namespace

@@ -96,6 +96,11 @@ struct Tolerance {
   // two directions are parallel for every purpose, whatever the tolerance (a crossing so far away
   // is only rounding's).
   static bool beyondRounding(double sine) { return std::abs(sine) > kInputRounding; }
+  // Whether two directions parallel within the angle tolerance are tilted beyond what rounding
+  // makes of parallel ones (a sine |a × b| or |d·n| above kUnitRounding, the rules' threshold
+  // since issue 18): such features drift apart along their length, and what a rule reads where
+  // the problem is centred is theirs only there (docs/spec.md §6.4). At or below it, parallel.
+  static bool tiltedBeyondRounding(double sine) { return std::abs(sine) > kUnitRounding; }
   // The angle tolerance, never below kAngleRoundingFloor: for decisions the formulas' own rounding
   // reaches (which of three angles is degenerate, whether two of up to eight rotations are one).
   double angleAboveRounding() const {
