@@ -34,6 +34,8 @@ bool Manifold::nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) c
   return false;
 }
 
+double Manifold::rotationCoupling() const { return std::numeric_limits<double>::infinity(); }
+
 bool Manifold::contains(const Isometry3d& X, const Tolerance& tol) const {
   Isometry3d Y = pose(project(X));
   double scale = std::max(1.0, X.translation().norm());
@@ -50,6 +52,22 @@ constexpr double kFine = 1e-8;  // the step at which the pattern search ends
 // The distance below which X lies on a manifold: the rounding of its coordinates.
 double roundingOf(const Isometry3d& X) {
   return 64 * std::numeric_limits<double>::epsilon() * (1.0 + X.translation().norm());
+}
+
+// The rounding of a rotation's angle (atan2 of entries exact to a few ulps): X's rotation lies
+// among a branch's when the branch's nearest rotation is this close to it.
+constexpr double kRotationRounding = 64 * std::numeric_limits<double>::epsilon();
+
+// Whether the nearest pose keeps X's rotation, proven (spec §2.6): X's rotation among m's
+// (m.nearestRotation zero to rounding) and the distance from X's position to the positions m
+// pairs with a rotation R, g(R), moving no farther than L ≤ 1 a radian (m.rotationCoupling). Then
+// for every rotation R of m, with R_X X's rotation:
+//   g(R) + angle(R, R_X) ≥ g(R_X) − L·angle(R, R_X) + angle(R, R_X) ≥ g(R_X),
+// and the pose with R_X and its nearest position is the nearest of the branch. *t: the rotation's
+// parameters where it keeps R_X (the rest as they were; the closed forms are the caller's).
+bool keepsRotation(const Manifold& m, const Isometry3d& X, Params* t) {
+  if (!(m.rotationCoupling() <= 1.0)) return false;     // +inf (not known) and NaN: no proof
+  return m.nearestRotation(X, t) <= kRotationRounding;  // NaN (no closed form): false
 }
 
 // Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
@@ -312,6 +330,12 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // origin) it may trade a rotation too small to see there for one that moves features far from
   // that origin (a part frame 1e6 from its features).
   if (all_closed_form || proj_d <= roundingOf(X)) return proj;
+  // X's rotation reached, and no turn gains more in position than it costs in angle: the nearest
+  // pose keeps it, its other parameters in closed form; nothing to search.
+  if (Params kept = proj; keepsRotation(m, X, &kept)) {
+    detail::poseWithClosedForms(m, X, fixed, &kept);
+    return kept;
+  }
   Parameter par[kMaxDof];
   for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   Params best;
@@ -381,7 +405,9 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
 
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
   // A distance that is not a number proves nothing, whatever the parameters.
-  return std::isfinite(distance) && (detail::allParamsClosedForm(m) || distance <= roundingOf(X));
+  if (!std::isfinite(distance)) return false;
+  Params t{};
+  return detail::allParamsClosedForm(m) || distance <= roundingOf(X) || keepsRotation(m, X, &t);
 }
 
 }  // namespace relpos

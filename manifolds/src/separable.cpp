@@ -88,6 +88,11 @@ double SeparableManifold::nearestRotation(const Isometry3d& X, Params* theta) co
   return rotationDistance(rot_.rotation(theta->data()), X.linear());
 }
 
+double SeparableManifold::rotationCoupling() const {
+  return trans_.projectsExactly() ? trans_.rotationCoupling()
+                                  : std::numeric_limits<double>::infinity();
+}
+
 bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {
   TranslationPart moved = trans_;
   moved.translate(offset_W, offset_M);

@@ -29,6 +29,9 @@ bool TranslationPart::invariantUnderSpin(const Vector3d& u) const {
 bool TranslationPart::invariantUnderRotation() const {
   return std::visit([](const auto& s) { return s.invariantUnderRotation(); }, shape);
 }
+double TranslationPart::rotationCoupling() const {
+  return std::visit([](const auto& s) { return s.rotationCoupling(); }, shape);
+}
 void TranslationPart::translate(const Vector3d& offset_W, const Vector3d& offset_M) {
   std::visit([&](auto& s) { s.translate(offset_W, offset_M); }, shape);
 }

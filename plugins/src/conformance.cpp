@@ -120,6 +120,26 @@ void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int sa
     const Params n = nearestParams(m, Y);
     if (poseDistance(m.pose(n), Y) > poseDistance(m.pose(m.project(Y)), Y) + 1e-12)
       fail("nearest-not-farther", "nearest is worse than the projection from " + poseText(Y));
+    // A coupling of at most 1 proves that the nearest pose of a position moved off the manifold
+    // keeps its rotation (spec §2.6): no pose of the manifold may be nearer than that one.
+    // Drawn over the manifold, and beside the answer (each parameter ± 0.001, 0.01, 0.1).
+    if (m.rotationCoupling() <= 1.0) {
+      Isometry3d Z = X;
+      Z.translation() += Vector3d(0.3, -0.2, 0.4);
+      const Params kept = nearestParams(m, Z);
+      const double kept_d = poseDistance(m.pose(kept), Z);
+      bool nearer = false;
+      for (int j = 0; j < 16 && !nearer; ++j)
+        nearer = poseDistance(m.pose(sampleParams(m, rng)), Z) < kept_d - 1e-9;
+      for (int i = 0; i < m.dof() && !nearer; ++i)
+        for (double h : {1e-3, -1e-3, 1e-2, -1e-2, 1e-1, -1e-1}) {
+          const Parameter p = m.parameter(i);
+          Params beside = kept;
+          beside[i] = p.periodic ? kept[i] + h : std::min(p.max, std::max(p.min, kept[i] + h));
+          nearer = nearer || poseDistance(m.pose(beside), Z) < kept_d - 1e-9;
+        }
+      if (nearer) fail("rotation-coupling", "a pose nearer than the nearest from " + poseText(Z));
+    }
     // The search weighs θ as the pose with its closed forms (Manifold::searchDistance).
     Params fast = t, full = t;
     const double weighed = m.searchDistance(Y, &fast);

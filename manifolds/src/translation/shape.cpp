@@ -67,13 +67,18 @@ bool mobileGeometryInvariant(const Fundamental& f, const Vector3d& u) {
 }
 
 bool mobilePointAtOrigin(const Fundamental& f) {
+  const Vector3d* p = mobileConstraintPoint(f);
+  return p && *p == Vector3d::Zero();
+}
+
+const Vector3d* mobileConstraintPoint(const Fundamental& f) {
   switch (f.kind) {
     case FundamentalKind::kPointPoint:
     case FundamentalKind::kPointLine:
     case FundamentalKind::kPointPlane:
-      return f.point_side == Side::kMobile && f.p == Vector3d::Zero();
+      return f.point_side == Side::kMobile ? &f.p : nullptr;
     default:
-      return false;
+      return nullptr;
   }
 }
 

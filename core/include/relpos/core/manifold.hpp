@@ -102,6 +102,17 @@ class Manifold {
   // there is no such arc. (After nearestRotation: added with plugin ABI 10.)
   virtual bool nearestArc(const Isometry3d& X, int* i, double* lo, double* hi) const;
 
+  // How far the distance from X's position to the positions the branch pairs with a rotation R
+  // moves, at most, per radian R turns: L with |g(R) − g(R')| ≤ L·angle(R, R'), g(R) that
+  // distance. Finite only where the position for a given rotation has a closed form (every
+  // parameter of the translation in closedFormParams()): a separable branch whose translational
+  // constraints all hold one mobile point p (its positions for R are S − R·p, and R·p moves no
+  // farther than |p| per radian) answers |p|. With L ≤ 1 and X's rotation among the branch's
+  // (nearestRotation zero), no turn gains more in position than it costs in angle: the nearest
+  // pose keeps X's rotation, proven. +inf (the default) where not known. (After nearestArc: added
+  // with plugin ABI 11.)
+  virtual double rotationCoupling() const;
+
   // Whether X lies on the manifold: its projection maps back onto X.
   bool contains(const Isometry3d& X, const Tolerance& tol) const;
 };
@@ -184,7 +195,9 @@ Params nearestParams(const Manifold& m, const Isometry3d& X);
 
 // Whether the pose at nearestParams(m, X), `distance` from X, is proven the nearest of the whole
 // manifold: every parameter has a closed form (the answer is then the global minimum, not a
-// search's), or the distance is X's own rounding (X lies on the manifold; no pose is nearer).
+// search's), or the distance is X's own rounding (X lies on the manifold; no pose is nearer), or
+// X's rotation is among the manifold's and its rotationCoupling() at most 1 (the answer keeps
+// X's rotation, and no turn away from it is nearer).
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance);
 
 }  // namespace relpos

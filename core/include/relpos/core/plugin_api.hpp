@@ -42,8 +42,9 @@ namespace relpos {
 // `certified` (a Certificate), Solution `complete`, Registry the numeric stage's hook
 // (setFallback: FallbackInfo, FallbackFn); 8: issue 18 — Manifold gained the virtual
 // searchDistance, a new last slot that a plugin built before it lacks; 9: issue 18 — and
-// nearestRotation after it; 10: issue 18 — and nearestArc after that).
-inline constexpr long kPluginAbiVersion = 10;
+// nearestRotation after it; 10: issue 18 — and nearestArc after that; 11: issue 18 — and
+// rotationCoupling after that).
+inline constexpr long kPluginAbiVersion = 11;
 
 // A fingerprint of every struct a plugin shares with relpos, member by member (offset, size,
 // alignment), and of every callback's signature: a plugin built against headers that differ in

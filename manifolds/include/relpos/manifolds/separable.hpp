@@ -34,6 +34,9 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   double searchDistance(const Isometry3d& X, Params* theta) const override;
   // The rotation part's projection, where it is the nearest rotation in angle.
   double nearestRotation(const Isometry3d& X, Params* theta) const override;
+  // The translation part's (TranslationPart::rotationCoupling: |p| for one mobile point p), where
+  // its projection is its nearest translation.
+  double rotationCoupling() const override;
   std::string describe() const override;
   // The translation part's points move; the closed forms are decided again (whether the spin
   // moves the translation depends on where the mobile origin is).

@@ -26,6 +26,7 @@ struct TranslationPart {
   bool projectsExactly() const;
   bool invariantUnderSpin(const Vector3d& u) const;
   bool invariantUnderRotation() const;
+  double rotationCoupling() const;
   void translate(const Vector3d& offset_W, const Vector3d& offset_M);
 
   template <typename Shape>

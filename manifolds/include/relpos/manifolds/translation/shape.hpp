@@ -14,6 +14,8 @@
 //   Vector3d translation(const Matrix3d& R, const double* t) const;
 //   void project(const Matrix3d& R, const Vector3d& T, double* t) const;
 // and may replace the defaults of ShapeBase below.
+#include <limits>
+
 #include "relpos/core/fundamental.hpp"
 #include "relpos/core/manifold.hpp"
 
@@ -47,6 +49,10 @@ bool mobileGeometryInvariant(const Fundamental& f, const Vector3d& u);
 // T with R, and the branch's nearest pose would no longer be its projection).
 bool mobilePointAtOrigin(const Fundamental& f);
 
+// The mobile point of a point-based constraint whose point is the mobile side's (its positions
+// for R are S_f − R·p, S_f fixed), else null.
+const Vector3d* mobileConstraintPoint(const Fundamental& f);
+
 namespace translation {
 
 template <typename Derived>
@@ -74,6 +80,22 @@ struct ShapeBase {
     Derived::eachConstraint(self(),
                             [&](const Fundamental& f) { all = all && mobilePointAtOrigin(f); });
     return all;
+  }
+  // How far the distance from a position to the translation set moves, at most, per radian the
+  // rotation turns: |p| when every constraint holds the same mobile point p (the set for R is
+  // S − R·p, and R·p moves no farther than |p| a radian; a distance to a set moves no farther
+  // than the set), 0 without constraints, +inf otherwise (a mobile line or plane turns the set
+  // about a point that may lie anywhere).
+  double rotationCoupling() const {
+    const Vector3d* p = nullptr;
+    bool one_point = true;
+    Derived::eachConstraint(self(), [&](const Fundamental& f) {
+      const Vector3d* q = mobileConstraintPoint(f);
+      one_point = one_point && q && (!p || *q == *p);
+      if (q && !p) p = q;
+    });
+    if (!one_point) return std::numeric_limits<double>::infinity();
+    return p ? p->norm() : 0.0;
   }
   // Every constraint's fixed point moved by offset_W, its mobile point by offset_M.
   void translate(const Vector3d& offset_W, const Vector3d& offset_M) {
