@@ -89,6 +89,32 @@ BENCHMARK_CAPTURE(BM_NearestByKind, cup, std::string("cup-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, tray, std::string("tray-grasp"));
 BENCHMARK_CAPTURE(BM_NearestByKind, weld, std::string("weld-seam"));
 
+// The nearest pose in a tracking loop: the tool's orientation already one of the branch's, its
+// position 4.9 cm off (the branch's pose at its reference parameters, moved). Where the branch's
+// positions move less than a length unit a radian with its rotation (a torch tip, a fingertip
+// 0.1-0.3 from the origin), the answer keeps the rotation, proven, without a search (spec §2.6).
+void BM_NearestTrackingByKind(benchmark::State& state, const std::string& prefix) {
+  std::vector<relpos::Solution> sols;
+  for (const auto& p : problems())
+    if (p.name.rfind(prefix, 0) == 0) sols.push_back(relpos::solve(p, relpos::builtinRegistry()));
+  std::vector<const relpos::Branch*> branches;
+  std::vector<relpos::Isometry3d> poses;
+  for (const auto& s : sols)
+    for (const auto& b : s.branches) {
+      relpos::Isometry3d X = b.manifold->pose(relpos::referenceParams(*b.manifold));
+      X.translation() += relpos::Vector3d(0.03, -0.02, 0.034);
+      branches.push_back(&b);
+      poses.push_back(X);
+    }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % branches.size();
+    benchmark::DoNotOptimize(relpos::nearestOnBranch(*branches[k], poses[k]).distance);
+  }
+}
+BENCHMARK_CAPTURE(BM_NearestTrackingByKind, cylinder, std::string("cylinder-grasp"));
+BENCHMARK_CAPTURE(BM_NearestTrackingByKind, weld, std::string("weld-seam"));
+
 // Writing the result line alone (no parse, no solve): the problems are solved once up front.
 void BM_Write(benchmark::State& state) {
   const auto ps = problems();

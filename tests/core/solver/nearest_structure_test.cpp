@@ -163,7 +163,8 @@ TEST(NearestStructure, NearestGlobalOnlyWithAProof) {
     // radian: that is proven, NearestKeptRotation.*.)
     Params kept{};
     const bool keeps =
-        m.rotationCoupling() <= 1.0 && m.nearestRotation(p.mobile.pose, &kept) <= 1e-14;
+        m.rotationCoupling() <= 1.0 &&
+        m.nearestRotation(p.mobile.pose, &kept) <= 64 * std::numeric_limits<double>::epsilon();
     if (!allClosedForm(m) && !keeps && n.distance > 1e-6) {
       EXPECT_FALSE(n.global) << p.name << " " << m.describe();
       ++searched_off;
