@@ -100,7 +100,12 @@ void startDerived(const ConstraintSet& set, const Matrix3d& R, double err, doubl
 }
 
 // A point of the line about which constraint f is invariant, if f pins one; false when f is not
-// invariant under turning about any line along a.
+// invariant under turning about any line along a. A line or plane normal parallel to a only
+// within the tolerance, tilted beyond rounding, is not: turned about a, it sweeps a cone that
+// leaves it by twice its tilt times the distance along it (seed offset 41: two lines 1e-9 rad
+// apart taken as one axis, their points 0.27 apart along it turned 5.7e-10 off the second line
+// at the turn the derived set was solved for, more than the tolerance: a feasible problem was
+// `inconsistent`).
 bool invariantAbout(const Fundamental& f, const Vector3d& a, const Tolerance& tol, bool* pins,
                     Vector3d* point) {
   *pins = true;
@@ -109,15 +114,17 @@ bool invariantAbout(const Fundamental& f, const Vector3d& a, const Tolerance& to
     return true;
   }
   *point = f.q;
+  const double tilt = f.d.cross(a).norm();
+  const bool along = tol.parallelUnit(tilt) && !Tolerance::tiltedBeyondRounding(tilt);
   switch (f.kind) {
     case FundamentalKind::kPointPoint:
       return true;
     case FundamentalKind::kPointLine:
     case FundamentalKind::kLineLine:
-      return tol.parallelUnit(f.d.cross(a).norm());
+      return along;
     case FundamentalKind::kPointPlane:
       *pins = false;
-      return tol.parallelUnit(f.d.cross(a).norm());
+      return along;
     default:
       return false;
   }

@@ -57,6 +57,11 @@ void pointLineAndPointPlane(const Fundamental& pl, const Fundamental& pp, const 
   }
   const Vector3d foot = k0 - h * n;  // the line's shadow on the plane passes through here
   if (da <= tol.length) {
+    // One point, and a line tilted beyond rounding: it crosses the plane at one point, and the
+    // cylinder about it cuts the plane in a long ellipse, not lines — read as lying in the plane,
+    // the point slid along it to where it had left the plane by more than the tolerance (as
+    // pl+pl's lines crossing within the tolerance: seed offset 7505).
+    if (tilted) return tol.zeroLength(p) ? pinAtCrossing() : out.defer();
     // One point: the cylinder about K_b cuts the plane in one or two lines ∥ K_b.
     if (tol.zeroLength(p)) return out.fire(kImplied).redundantSecond();  // K_b lies in Π_b
     out.fire(kLinesOnPlane);

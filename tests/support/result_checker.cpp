@@ -164,7 +164,8 @@ double RelativeEvaluator::poseGap(const Isometry3d& A, const Isometry3d& B) cons
 
 std::string CheckReport::summary() const {
   std::string out;
-  for (const std::string* s : {&non_finite, &non_rigid, &violating, &known_lost, &bad_json})
+  for (const std::string* s :
+       {&non_finite, &non_rigid, &violating, &known_lost, &bad_json, &false_global})
     if (!s->empty()) out += "  " + *s + "\n";
   return out;
 }
@@ -284,9 +285,33 @@ CheckReport checkSolution(const Problem& p, const Solution& s, const CheckOption
       centre = k.parameters;
     }
     if (!finite(centre, dof)) centre = Params{};
+    // A nearest pose written as proven the branch's nearest (`nearest_global`): no pose of the
+    // branch drawn here is nearer the initial pose (beyond the rounding of the distances).
+    const json* written = nullptr;
+    if (doc.is_object() && doc.contains("branches") && b < doc["branches"].size())
+      written = &doc["branches"][b];
+    const bool global = written && written->value("nearest_global", false) &&
+                        (*written)["nearest"]["distance"].is_number();
+    const double global_d = global ? (*written)["nearest"]["distance"].get<double>() : 0.0;
+    const double slack =
+        1e-9 * (1.0 + global_d) + 1e-14 * (1.0 + p.mobile.pose.translation().norm());
+    auto nearerThanGlobal = [&](const Isometry3d& X, const std::string& what) {
+      if (!global || !rep.false_global.empty() || !X.matrix().allFinite()) return;
+      const double d = poseDistance(X, p.mobile.pose);
+      if (d < global_d - slack) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "branch " << b << " says its nearest pose (distance " << global_d
+           << ") is proven the nearest, but " << what << " is at " << d << ": " << poseText(X);
+        rep.false_global = os.str();
+      }
+    };
+    if (opt.known) nearerThanGlobal(m.pose(centre), "the pose nearest the known pose");
     for (int k = 0; k < opt.samples_per_branch; ++k) {
       const Params t = drawParams(m, centre, 3.0 * size, rng);
-      pose(m.pose(t), t, dof, k, b);
+      const Isometry3d X = m.pose(t);
+      pose(X, t, dof, k, b);
+      nearerThanGlobal(X, "sample " + std::to_string(k));
     }
   }
   if (opt.known && !s.branches.empty() && !(rep.known_gap <= opt.known_tolerance)) {

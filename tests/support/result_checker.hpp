@@ -56,6 +56,7 @@ struct CheckReport {
   std::string violating;   // a branch pose violating an input constraint
   std::string known_lost;  // the known solution on no branch
   std::string bad_json;    // the result line holds a null SPEC does not allow, or does not parse
+  std::string false_global;  // a pose of a branch nearer than its nearest said proven the nearest
   double worst_violation = 0.0;
   double known_gap = std::numeric_limits<double>::infinity();
   // The same gap through the branches' projections (Manifold::project, exact for a pose on the
@@ -65,7 +66,7 @@ struct CheckReport {
   bool knownFoundByProjection(double tolerance) const { return known_projection_gap <= tolerance; }
   bool ok() const {
     return non_finite.empty() && non_rigid.empty() && violating.empty() && known_lost.empty() &&
-           bad_json.empty();
+           bad_json.empty() && false_global.empty();
   }
   std::string summary() const;
 };

@@ -90,6 +90,9 @@ void runFamily(const DegenerateFamily& f, std::uint64_t seed) {
                 cause, r.known_lost + "\n" + details);
       if (!r.bad_json.empty())
         log.add(group, "non-finite JSON", cause, r.bad_json + "\n" + details);
+      if (!r.false_global.empty())
+        log.add(group, "nearest said global, a pose nearer", cause,
+                r.false_global + "\n" + details);
     }
   }
   log.report(f.name);

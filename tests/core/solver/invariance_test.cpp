@@ -103,6 +103,8 @@ Solution solveAndCheck(const WrittenSpec& spec, const std::optional<Isometry3d>&
                                                           : "known pose lost",
             cause(s), r.known_lost + "\n" + details);
   if (!r.bad_json.empty()) log.add(group, "non-finite JSON", cause(s), r.bad_json + "\n" + details);
+  if (!r.false_global.empty())
+    log.add(group, "nearest said global, a pose nearer", cause(s), r.false_global + "\n" + details);
   return s;
 }
 

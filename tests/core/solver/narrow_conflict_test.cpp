@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "evaluator.hpp"
@@ -174,6 +175,20 @@ TEST(NarrowConflict, LineCoincidencesFarAlongNearlyParallelLinesAreNeverInconsis
                          0.39595617180169018));
 }
 
+// A fourth (offset 41, the same family, two coincidences alone): the mobile lines 1e-9 rad apart
+// and the fixed ones too, so one parallelism fixes the rotation but for a turn about the first
+// fixed line, and both coincidences were read as invariant under that turn (the revolved branch's
+// derived set, solved at one turn). They are only within the tolerance: at that turn the second
+// line was 5.7e-10 off where the first put its contact, and the problem inconsistent. Lines
+// tilted beyond rounding from the axis are not invariant about it (derived_sets.cpp).
+TEST(NarrowConflict, LineCoincidencesTiltedFromTheTurnsAxisAreNeverInconsistent) {
+  expectNeverInconsistent(
+      R"spec({"relpos":1,"name":"degenerate-12","units":{"angle":"rad"},"fixed":{"name":"base","pose":{"position":[-1.0797151059948273,-0.3183710413733061,-0.5638667841254821],"orientation":[-0.3659943470062804,-0.021688692825686327,0.24964294843898877,0.8962455784312957]},"features":{"F1":{"line":{"point":[2.393769517766246,-1.2500419054847005,-0.6004716928052486],"direction":[-0.04810575721286284,-0.2530792485296477,0.9662487930583128]}},"F3":{"line":{"point":[2.37059824648452,-1.371943487941238,-0.13505519748367634],"direction":[-0.04810575771481376,-0.25307924768717593,0.9662487932539822]}}}},"mobile":{"name":"part","pose":{"position":[-1.6612226445846012,-1.778616774930938,-1.743181957996661],"orientation":[-0.021295324127109203,-0.17200832041344868,-0.356986273034897,0.9178891260623582]},"features":{"M0":{"line":{"point":[1.0230214028715297,1.4555286953720332,0.8798001129799102],"direction":[0.9055850057224626,0.0812582009780448,0.4163086621540068]}},"M2":{"line":{"point":[1.2711085153701125,1.4777895675451949,0.9938488368585425],"direction":[0.9055850055149389,0.08125820020693396,0.41630866275593864]}}}},"constraints":[{"type":"coincident","fixed":"F1","mobile":"M0","orientation":"aligned"},{"type":"coincident","fixed":"F3","mobile":"M2","orientation":"aligned"}]})spec",
+      Vector3d(0.50713175060192972, -1.202543947202853, -0.94965434825722062),
+      Eigen::Quaterniond(0.50528978252590162, -0.41361280315403265, -0.59853489119919001,
+                         -0.46407183577455369));
+}
+
 // A constructed case: fixed features and mobile points (each object's "features" members, JSON)
 // under `constraints` (a JSON array's members), both frames at the world's origin, which the
 // known pose — translated by `position`, not turned — meets: never `inconsistent`.
@@ -216,6 +231,56 @@ TEST(NarrowConflict, PointsOnALineAndAPlaneTiltedWithinTheToleranceAreNeverIncon
       R"({"type": "distance", "fixed": "K", "mobile": "a", "value": 0.9999999},
          {"type": "coincident", "fixed": "S", "mobile": "a"})",
       Vector3d(-100, 0, 0));
+}
+
+// One point on two lines that cross at an angle within the tolerance but beyond rounding (seed
+// offset 7505), or on a line and a plane it crosses so: one line (or a line in the plane) where
+// the problem is centred, they drift apart along their length, so the point is not anywhere on
+// one of them (read so, the point slid 900 along it, to where the other was 9e-7 away); nor is a
+// point 0.1 from the line and on the plane on two lines of it. Whatever the answer, every pose of
+// every branch, drawn 10,000 about its reference parameters, meets every constraint.
+TEST(NarrowConflict, APointOnFeaturesCrossingWithinTheToleranceIsNotOnOneLine) {
+  struct Case {
+    const char* fixed;  // `T` stands for the tilt
+    const char* constraints;
+  };
+  const Case cases[] = {
+      {R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, 0]}},
+          "L": {"line": {"point": [0, 0, 0], "direction": [1, T, 0]}})",
+       R"({"type": "coincident", "fixed": "K", "mobile": "a"},
+          {"type": "coincident", "fixed": "L", "mobile": "a"})"},
+      {R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, T]}},
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}})",
+       R"({"type": "coincident", "fixed": "K", "mobile": "a"},
+          {"type": "coincident", "fixed": "S", "mobile": "a"})"},
+      {R"("K": {"line": {"point": [0, 0, 0], "direction": [1, 0, T]}},
+          "S": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1]}})",
+       R"({"type": "distance", "fixed": "K", "mobile": "a", "value": 0.1},
+          {"type": "coincident", "fixed": "S", "mobile": "a"})"},
+  };
+  for (const Case& c : cases)
+    for (const std::string tilt : {"1e-9", "1e-11"}) {
+      std::string fixed = c.fixed;
+      fixed.replace(fixed.find('T'), 1, tilt);
+      const std::string spec = R"({"relpos": 1, "name": "crossing", "units": {"angle": "rad"},
+          "fixed": {"name": "base", "features": {)" +
+                               fixed + R"(}},
+          "mobile": {"name": "part", "features": {"a": {"point": [0.3, 0.2, 0.1]}}},
+          "constraints": [)" + c.constraints +
+                               "]}";
+      const ParseResult r = parseSpec(spec, builtinRegistry());
+      ASSERT_TRUE(r.problem) << spec;
+      const Problem& p = *r.problem;
+      const Solution s = solve(p, builtinRegistry());
+      EXPECT_NE(s.status, Status::kInconsistent) << spec;  // where they cross meets both
+      std::mt19937_64 rng(7505);
+      for (const Branch& b : s.branches)
+        for (int k = 0; k < 2000; ++k) {
+          const Manifold& m = *b.manifold;
+          const Isometry3d X = m.pose(sampleParameters(m, referenceParams(m), 1e4, rng));
+          ASSERT_LE(worstViolation(p, X), 1e-9) << m.describe() << "\n" << spec;
+        }
+    }
 }
 
 // And for Somani's ranges on one point (by construction): two slabs, a thick cylinder and a
