@@ -18,6 +18,7 @@
 
 #include "evaluator.hpp"
 #include "expected_results.hpp"
+#include "pin_manifold.hpp"
 #include "random_problems.hpp"
 #include "relpos/builtins/builtins.hpp"
 #include "relpos/core/plugin_api.hpp"
@@ -440,44 +441,16 @@ TEST(Conformance, ASearchDistanceThatIsNotThePosesIsNamed) {
       << report.text();
 }
 
-// A pin: the mobile object turns about z through a point 5 from its origin, which stays at the
-// world's (1, 0, 0). Its positions move 5 a radian with the rotation; claiming a coupling of 1
-// (Manifold::rotationCoupling), a turn away from X's rotation is nearer than keeping it, and the
-// kit names the claim.
-class Pin final : public MixedManifoldBase<Pin> {
- public:
-  explicit Pin(double claimed) : claimed_(claimed) {}
-  const char* typeName() const override { return "Pin"; }
-  int dof() const override { return 1; }
-  Parameter parameter(int) const override { return {"turn", ParamKind::kAngle, -0.5, 0.5, false}; }
-  Isometry3d pose(const Params& t) const override {
-    Isometry3d X = Isometry3d::Identity();
-    X.linear() = Eigen::AngleAxisd(t[0], Vector3d::UnitZ()).toRotationMatrix();
-    X.translation() = Vector3d(1, 0, 0) - X.linear() * Vector3d(5, 0, 0);
-    return X;
-  }
-  Params project(const Isometry3d& X) const override {
-    return Params{std::clamp(std::atan2(X.linear()(1, 0), X.linear()(0, 0)), -0.5, 0.5)};
-  }
-  double nearestRotation(const Isometry3d& X, Params* t) const override {
-    (*t)[0] = project(X)[0];
-    return rotationDistance(pose(*t).linear(), X.linear());
-  }
-  double rotationCoupling() const override { return claimed_; }
-  std::string describe() const override { return "pin"; }
-
- private:
-  double claimed_;
-};
-
+// A pin that claims a coupling of 1 where its positions move 5 a radian (pin_manifold.hpp): a
+// turn away from X's rotation is nearer than keeping it, and the kit names the claim.
 TEST(Conformance, ACouplingThatATurnBeatsIsNamed) {
   plugins::Report report;
-  plugins::checkManifold(Pin(1.0), 3, report, 5);
+  plugins::checkManifold(test::PinManifold(1.0), 3, report, 5);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.failures[0].rfind("[rotation-coupling] pin: ", 0), 0u) << report.text();
   // Its honest coupling, 5, claims nothing: the search finds the turn, and the kit is content.
   plugins::Report honest;
-  plugins::checkManifold(Pin(5.0), 3, honest, 5);
+  plugins::checkManifold(test::PinManifold(5.0), 3, honest, 5);
   EXPECT_TRUE(honest.ok()) << honest.text();
 }
 

@@ -4,10 +4,7 @@
 // behind them.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
-#include <algorithm>
-#include <cmath>
-
+#include "pin_manifold.hpp"
 #include "problem_transforms.hpp"
 #include "random_problems.hpp"
 #include "relpos/io/spec_reader.hpp"
@@ -104,32 +101,6 @@ TEST(PropertySupport, CheckerFlagsAWrongAnswer) {
   EXPECT_FALSE(lost.ok());
 }
 
-// A pin: the mobile object turns about z through its point (5, 0, 0), held at the world's
-// (1, 0, 0) — poses of a point-on-point coincidence — its positions moving 5 a radian with the
-// turn, while it claims at most 1 (Manifold::rotationCoupling): its nearest pose is said proven
-// where a turn is nearer.
-class OverclaimingPin final : public MixedManifoldBase<OverclaimingPin> {
- public:
-  const char* typeName() const override { return "OverclaimingPin"; }
-  int dof() const override { return 1; }
-  Parameter parameter(int) const override { return {"turn", ParamKind::kAngle, -0.5, 0.5, false}; }
-  Isometry3d pose(const Params& t) const override {
-    Isometry3d X = Isometry3d::Identity();
-    X.linear() = Eigen::AngleAxisd(t[0], Vector3d::UnitZ()).toRotationMatrix();
-    X.translation() = Vector3d(1, 0, 0) - X.linear() * Vector3d(5, 0, 0);
-    return X;
-  }
-  Params project(const Isometry3d& X) const override {
-    return Params{std::clamp(std::atan2(X.linear()(1, 0), X.linear()(0, 0)), -0.5, 0.5)};
-  }
-  double nearestRotation(const Isometry3d& X, Params* t) const override {
-    (*t)[0] = project(X)[0];
-    return rotationDistance(pose(*t).linear(), X.linear());
-  }
-  double rotationCoupling() const override { return 1.0; }
-  std::string describe() const override { return "overclaiming pin"; }
-};
-
 TEST(PropertySupport, CheckerFlagsANearestFalselySaidGlobal) {
   Problem p;
   p.fixed.features.push_back({"F", Feature::makePoint(Vector3d(1, 0, 0))});
@@ -139,14 +110,14 @@ TEST(PropertySupport, CheckerFlagsANearestFalselySaidGlobal) {
   c.fixed = p.fixed.features[0].feature, c.mobile = p.mobile.features[0].feature;
   c.fixed_name = "F", c.mobile_name = "M";
   p.constraints.push_back(c);
-  // The initial pose: the pin's rotation at turn 0, moved 0.3 along y (a turn of −0.06 brings it
-  // back for 0.06 rad).
-  p.mobile.pose = OverclaimingPin().pose(Params{});
+  // A pin claiming a coupling of 1 (pin_manifold.hpp); the initial pose: its rotation at turn 0,
+  // moved 0.3 along y (a turn of −0.06 brings it back for 0.06 rad).
+  p.mobile.pose = PinManifold(1.0).pose(Params{});
   p.mobile.pose.translation() += Vector3d(0, 0.3, 0);
   Solution s;
   s.status = Status::kSolved;
   s.branches.emplace_back();
-  s.branches.back().manifold.emplace<OverclaimingPin>();
+  s.branches.back().manifold.emplace<PinManifold>(1.0);
   s.branches.back().sources = 1;
   CheckOptions opt;
   opt.samples_per_branch = 200;
