@@ -58,16 +58,16 @@ double roundingOf(const Isometry3d& X) {
 // among a branch's when the branch's nearest rotation is this close to it.
 constexpr double kRotationRounding = 64 * std::numeric_limits<double>::epsilon();
 
-// Whether the nearest pose keeps X's rotation, proven (spec §2.6): X's rotation among m's
-// (m.nearestRotation zero to rounding) and the distance from X's position to the positions m
-// pairs with a rotation R, g(R), moving no farther than L ≤ 1 a radian (m.rotationCoupling). Then
-// for every rotation R of m, with R_X X's rotation:
+// Whether a pose Y of m with its closed-form parameters set keeps X's rotation, proven the nearest
+// of m (spec §2.6): Y's rotation is X's (to rounding), so X's rotation is among m's, and the
+// distance from X's position to the positions m pairs with a rotation R, g(R), moves no farther
+// than L ≤ 1 a radian (m.rotationCoupling). Then for every rotation R of m, with R_X X's
+// rotation:
 //   g(R) + angle(R, R_X) ≥ g(R_X) − L·angle(R, R_X) + angle(R, R_X) ≥ g(R_X),
-// and the pose with R_X and its nearest position is the nearest of the branch. *t: the rotation's
-// parameters where it keeps R_X (the rest as they were; the closed forms are the caller's).
-bool keepsRotation(const Manifold& m, const Isometry3d& X, Params* t) {
-  if (!(m.rotationCoupling() <= 1.0)) return false;     // +inf (not known) and NaN: no proof
-  return m.nearestRotation(X, t) <= kRotationRounding;  // NaN (no closed form): false
+// and Y, with R_X and its nearest position, is the nearest pose of the branch.
+bool keepsRotation(const Manifold& m, const Isometry3d& X, const Isometry3d& Y) {
+  if (!(m.rotationCoupling() <= 1.0)) return false;  // +inf (not known) and NaN: no proof
+  return rotationDistance(Y.linear(), X.linear()) <= kRotationRounding;
 }
 
 // Pattern search (Hooke–Jeeves) on poseDistance from `best` down to a step of `min_step`:
@@ -319,23 +319,20 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   // (A branch whose every parameter has a closed form is projected by poseWithTail itself.)
   const bool all_closed_form = detail::allParamsClosedForm(m);
   Params proj = all_closed_form ? Params{} : m.project(X);
-  double proj_d = detail::distanceWithTailSet(m, X, fixed, &proj);
+  Isometry3d proj_pose = detail::poseWithClosedForms(m, X, fixed, &proj);
+  double proj_d = poseDistance(proj_pose, X);
   if (std::isnan(proj_d)) {  // a projection broke down (a NaN anywhere makes the distance NaN)
     proj = referenceParams(m);
-    proj_d = detail::distanceWithTailSet(m, X, fixed, &proj);
+    proj_pose = detail::poseWithClosedForms(m, X, fixed, &proj);
+    proj_d = poseDistance(proj_pose, X);
     if (std::isnan(proj_d)) return referenceParams(m);
   }
   // A pose on the manifold is its own projection, to the rounding of its coordinates: the search
   // cannot improve on that, and in the combined metric (the translation of the mobile frame's
   // origin) it may trade a rotation too small to see there for one that moves features far from
-  // that origin (a part frame 1e6 from its features).
-  if (all_closed_form || proj_d <= roundingOf(X)) return proj;
-  // X's rotation reached, and no turn gains more in position than it costs in angle: the nearest
-  // pose keeps it, its other parameters in closed form; nothing to search.
-  if (Params kept = proj; keepsRotation(m, X, &kept)) {
-    detail::poseWithClosedForms(m, X, fixed, &kept);
-    return kept;
-  }
+  // that origin (a part frame 1e6 from its features). Nor can it where the projection keeps X's
+  // rotation and no turn gains more in position than it costs in angle: that is the nearest pose.
+  if (all_closed_form || proj_d <= roundingOf(X) || keepsRotation(m, X, proj_pose)) return proj;
   Parameter par[kMaxDof];
   for (int i = 0; i < n; ++i) par[i] = m.parameter(i);
   Params best;
@@ -403,11 +400,18 @@ Params nearestParams(const Manifold& m, const Isometry3d& X) {
   return best;
 }
 
-bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
+bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, const Isometry3d& nearest,
+                     double distance) {
   // A distance that is not a number proves nothing, whatever the parameters.
   if (!std::isfinite(distance)) return false;
-  Params t{};
-  return detail::allParamsClosedForm(m) || distance <= roundingOf(X) || keepsRotation(m, X, &t);
+  return detail::allParamsClosedForm(m) || distance <= roundingOf(X) ||
+         keepsRotation(m, X, nearest);
+}
+
+bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance) {
+  if (!std::isfinite(distance)) return false;
+  if (detail::allParamsClosedForm(m) || distance <= roundingOf(X)) return true;
+  return keepsRotation(m, X, m.pose(nearestParams(m, X)));
 }
 
 }  // namespace relpos

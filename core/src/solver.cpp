@@ -782,7 +782,7 @@ NearestPose nearestOnBranch(const Branch& b, const Isometry3d& X_WM_initial) {
   n.parameters = nearestParams(*b.manifold, X_WM_initial);
   n.pose = b.manifold->pose(n.parameters);
   n.distance = poseDistance(n.pose, X_WM_initial);
-  n.global = nearestIsGlobal(*b.manifold, X_WM_initial, n.distance);
+  n.global = nearestIsGlobal(*b.manifold, X_WM_initial, n.pose, n.distance);
   return n;
 }
 

@@ -7,6 +7,7 @@ namespace relpos::manifolds {
 SeparableManifold::SeparableManifold(const RotationPart& r, const TranslationPart& t)
     : rot_(r), trans_(t), dof_(r.dof() + t.dof()) {
   if (!trans_.projectsExactly()) return;
+  coupling_ = trans_.rotationCoupling();
   closed_form_ = ((1u << dof()) - 1u) & ~((1u << rot_.dof()) - 1u);
   if (rot_.projectsExactly() && trans_.invariantUnderRotation()) {
     // The distance splits: ‖ΔT‖ depends on the translation parameters alone, the angle on the
@@ -86,11 +87,6 @@ double SeparableManifold::nearestRotation(const Isometry3d& X, Params* theta) co
   if (!rot_.projectsExactly()) return std::numeric_limits<double>::quiet_NaN();
   rot_.project(X.linear(), theta->data());
   return rotationDistance(rot_.rotation(theta->data()), X.linear());
-}
-
-double SeparableManifold::rotationCoupling() const {
-  return trans_.projectsExactly() ? trans_.rotationCoupling()
-                                  : std::numeric_limits<double>::infinity();
 }
 
 bool SeparableManifold::rebase(const Vector3d& offset_W, const Vector3d& offset_M) {

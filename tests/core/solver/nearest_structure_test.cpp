@@ -161,10 +161,9 @@ TEST(NearestStructure, NearestGlobalOnlyWithAProof) {
     EXPECT_TRUE(nearestOnBranch(b, on).global) << p.name << " " << m.describe();
     // (Nor one whose rotation X reaches, its position coupled to the rotation by at most 1 a
     // radian: that is proven, NearestKeptRotation.*.)
-    Params kept{};
     const bool keeps =
-        m.rotationCoupling() <= 1.0 &&
-        m.nearestRotation(p.mobile.pose, &kept) <= 64 * std::numeric_limits<double>::epsilon();
+        m.rotationCoupling() <= 1.0 && rotationDistance(n.pose.linear(), p.mobile.pose.linear()) <=
+                                           64 * std::numeric_limits<double>::epsilon();
     if (!allClosedForm(m) && !keeps && n.distance > 1e-6) {
       EXPECT_FALSE(n.global) << p.name << " " << m.describe();
       ++searched_off;

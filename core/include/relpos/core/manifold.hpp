@@ -193,11 +193,13 @@ Params referenceParams(const Manifold& m);
 // first-order certificate of the minimum ends the search. Never worse than the projection.
 Params nearestParams(const Manifold& m, const Isometry3d& X);
 
-// Whether the pose at nearestParams(m, X), `distance` from X, is proven the nearest of the whole
-// manifold: every parameter has a closed form (the answer is then the global minimum, not a
-// search's), or the distance is X's own rounding (X lies on the manifold; no pose is nearer), or
-// X's rotation is among the manifold's and its rotationCoupling() at most 1 (the answer keeps
-// X's rotation, and no turn away from it is nearer).
+// Whether the pose `nearest` at nearestParams(m, X), `distance` from X, is proven the nearest of
+// the whole manifold: every parameter has a closed form (the answer is then the global minimum,
+// not a search's), or the distance is X's own rounding (X lies on the manifold; no pose is
+// nearer), or it keeps X's rotation (to rounding) and rotationCoupling() is at most 1 (no turn
+// away from X's rotation is nearer). The second form finds `nearest` itself.
+bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, const Isometry3d& nearest,
+                     double distance);
 bool nearestIsGlobal(const Manifold& m, const Isometry3d& X, double distance);
 
 }  // namespace relpos

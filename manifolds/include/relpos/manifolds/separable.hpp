@@ -1,6 +1,7 @@
 #pragma once
 // A separable solution branch: a rotation part × a translation part that depends on the rotation
 // (T = S_f − R S_m, PMF §V).
+#include <limits>
 #include <string>
 
 #include "relpos/core/manifold.hpp"
@@ -35,8 +36,9 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   // The rotation part's projection, where it is the nearest rotation in angle.
   double nearestRotation(const Isometry3d& X, Params* theta) const override;
   // The translation part's (TranslationPart::rotationCoupling: |p| for one mobile point p), where
-  // its projection is its nearest translation.
-  double rotationCoupling() const override;
+  // its projection is its nearest translation; +inf elsewhere. Decided once, with the closed
+  // forms: the search asks it for every nearest pose.
+  double rotationCoupling() const override { return coupling_; }
   std::string describe() const override;
   // The translation part's points move; the closed forms are decided again (whether the spin
   // moves the translation depends on where the mobile origin is).
@@ -51,6 +53,7 @@ class SeparableManifold final : public ManifoldBase<SeparableManifold> {
   unsigned closed_form_ = 0u;
   int spin_index_ = -1;     // the spin θ (RotationPart::spinAxis) when closed form, else −1
   bool full_spin_ = false;  // a closed-form spin over a full turn (not an arc)
+  double coupling_ = std::numeric_limits<double>::infinity();
 };
 // Stored inline in a Branch (ManifoldHolder): the largest shapes of the two variants together.
 static_assert(sizeof(SeparableManifold) <= kManifoldStorage, "separable manifold too large");
