@@ -55,7 +55,7 @@ double roundingOf(const Isometry3d& X) {
 }
 
 // The rounding of a rotation's angle (atan2 of entries exact to a few ulps): X's rotation lies
-// among a branch's when the branch's nearest rotation is this close to it.
+// among a branch's when a pose of the branch has a rotation this close to it.
 constexpr double kRotationRounding = 64 * std::numeric_limits<double>::epsilon();
 
 // Whether a pose Y of m with its closed-form parameters set keeps X's rotation, proven the nearest

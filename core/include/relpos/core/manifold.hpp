@@ -108,9 +108,9 @@ class Manifold {
   // parameter of the translation in closedFormParams()): a separable branch whose translational
   // constraints all hold one mobile point p (its positions for R are S − R·p, and R·p moves no
   // farther than |p| per radian) answers |p|. With L ≤ 1 and X's rotation among the branch's
-  // (nearestRotation zero), no turn gains more in position than it costs in angle: the nearest
-  // pose keeps X's rotation, proven. +inf (the default) where not known. (After nearestArc: added
-  // with plugin ABI 11.)
+  // (a pose of it with X's rotation), no turn gains more in position than it costs in angle: the
+  // nearest pose keeps X's rotation, proven. +inf (the default) where not known. (After nearestArc:
+  // added with plugin ABI 11.)
   virtual double rotationCoupling() const;
 
   // Whether X lies on the manifold: its projection maps back onto X.
