@@ -131,13 +131,14 @@ void checkManifold(const Manifold& m, std::uint64_t seed, Report& report, int sa
       bool nearer = false;
       for (int j = 0; j < 16 && !nearer; ++j)
         nearer = poseDistance(m.pose(sampleParams(m, rng)), Z) < kept_d - 1e-9;
-      for (int i = 0; i < m.dof() && !nearer; ++i)
+      for (int i = 0; i < m.dof() && !nearer; ++i) {
+        const Parameter p = m.parameter(i);
         for (double h : {1e-3, -1e-3, 1e-2, -1e-2, 1e-1, -1e-1}) {
-          const Parameter p = m.parameter(i);
           Params beside = kept;
           beside[i] = p.periodic ? kept[i] + h : std::min(p.max, std::max(p.min, kept[i] + h));
           nearer = nearer || poseDistance(m.pose(beside), Z) < kept_d - 1e-9;
         }
+      }
       if (nearer) fail("rotation-coupling", "a pose nearer than the nearest from " + poseText(Z));
     }
     // The search weighs θ as the pose with its closed forms (Manifold::searchDistance).

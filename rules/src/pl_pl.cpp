@@ -84,9 +84,10 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
     // far along them (seed offset 7505: a point on two lines 1e-9 rad apart read as one line
     // slid 900 along it, where the second was 9e-7 away). A point on both is where they cross
     // (below); at equal distances from both, the pair is left to the others.
-    const bool same_here = db <= tol.length && tol.equalLength(p, q);
-    if (same_here && !drifting) return out.fire(kSameLine).redundantSecond();
-    if (db <= tol.length && !same_here) return conflict("one point at two distances from one line");
+    if (db <= tol.length) {
+      if (!tol.equalLength(p, q)) return conflict("one point at two distances from one line");
+      if (!drifting) return out.fire(kSameLine).redundantSecond();
+    }
     if (tol.zeroLength(p) && tol.zeroLength(q) && drifting) {
       // Apart here, they may still cross further away: then the point is there. (Lines parallel
       // to rounding are parallel: where they would cross is rounding over rounding — seed offset
@@ -96,7 +97,7 @@ void samePoint(const Fundamental& a, const Fundamental& b, const Tolerance& tol,
       closestPointsOfLines(a.q, a.d, b.q, b.d, 0.0, &f1, &f2);
       if ((f2 - f1).norm() <= tol.length) return pinWhereLinesMeet(a, f1, f2, sin_theta, tol, out);
     }
-    if (same_here) return out.defer();
+    if (db <= tol.length) return out.defer();  // drifting, equally far from both
     if (db > p + q + tol.length || db < std::abs(p - q) - tol.length) return conflict(kNoPose);
     // Where the cylinders meet is read off (p² − q²) / 2 db: nearly coaxial ones magnify the
     // radii's rounding by p / db (axes 1e-8 apart: lines 1e-8 off for radii of 1).
